@@ -1,0 +1,212 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_LSD_ADVANCE_LSD_ADVANCE_HPP
+#define OPENCV_LSD_ADVANCE_LSD_ADVANCE_HPP
+
+#include "opencv2/core.hpp"
+
+namespace cv {
+namespace ximgproc {
+
+//! @addtogroup lsd_advance
+//! @{
+
+/** @brief Statistics of the last LSDAdvance::detect call.
+
+Counts are numbers of segments after each stage; times are wall-clock milliseconds of each stage
+(stage 0 includes the conversion of a colour input to gray).
+*/
+struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
+{
+    LSDAdvanceStats()
+        : baseSegments(0), filteredSegments(0), mergeGroups(0), outputSegments(0),
+          minLength(0), alpha(1), baseMs(0), filterMs(0), groupingMs(0), mergingMs(0)
+    {}
+
+    CV_PROP_RW int baseSegments;     //!< segments returned by the base detector (stage 0)
+    CV_PROP_RW int filteredSegments; //!< segments that survived the length filter (stage 1)
+    CV_PROP_RW int mergeGroups;      //!< endpoint groups holding two or more segments (stage 2)
+    CV_PROP_RW int outputSegments;   //!< segments returned after merging (stage 3)
+    CV_PROP_RW double minLength;     //!< length threshold of stage 1, in pixels (0 when the filter is off)
+    CV_PROP_RW double alpha;         //!< inter-frame factor used by stage 1, in (0, 1.2]
+    CV_PROP_RW double baseMs;        //!< time of stage 0, ms
+    CV_PROP_RW double filterMs;      //!< time of stage 1, ms
+    CV_PROP_RW double groupingMs;    //!< time of stage 2, ms
+    CV_PROP_RW double mergingMs;     //!< time of stage 3, ms
+};
+
+/** @example samples/lsd_advance_demo.cpp
+An example comparing LSDAdvance with OpenCV's LineSegmentDetector on building.jpg.
+*/
+
+/** @brief Line segment detector that returns fewer, longer segments than LSD (@cite Guan2026).
+
+The segments of OpenCV's LineSegmentDetector (@cite Rafael12) are post-processed in three stages:
+1. **Adaptive length suppression**: with @f$\mu@f$ and @f$\sigma@f$ the mean and population
+   standard deviation of the segment lengths of the frame, segments shorter than
+   @f$L_{min} = \alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$ are dropped. @f$\alpha@f$ is 1 for a
+   single image; in a sequence it follows the change of the count of kept segments over the two
+   previous frames (see LENGTH_FILTER_INTERFRAME).
+2. **Grouping**: segments are binned by undirected angle (getAngleBinWidth), and two segments
+   of the same (or, by default, a neighbouring) bin are connected when two of their endpoints
+   are closer than getEndpointDistance. Connected components are the merge groups.
+3. **Similarity-ordered merging**: in each group, the segments at least getBaselineRatio times
+   as long as the longest are baselines. Every other segment L is scored against each
+   baseline B with @f$S = w_d S_d + w_p S_p + w_l S_l@f$ (direction: cosine of the angle
+   between the directed segments, clipped at 0; proximity: @f$1 - D_{min}/D_{th}@f$ clipped at 0,
+   @f$D_{th}@f$ = getProximityRatio times the mean length of B and L; length:
+   @f$1 - |l_B - l_L| / \max(l_B, l_L)@f$) and fused into its best baseline, best scores
+   first, when @f$S \ge@f$ getMergeThreshold and both of its endpoints lie within
+   getMaxPerpendicularOffset of B's line. The fused segment passes through the
+   length-weighted centre of B and L, along their length-weighted mean direction, and spans
+   the projections of all four endpoints.
+
+@note Differences from @cite Guan2026, each chosen to fix a gap of the paper: collinear pieces
+that straddle an angle-bin edge (9.9 vs 10.1 deg, 179.9 vs 0.1 deg) are paired across it
+(ANGLE_BINS_NEIGHBOURS); the centre of a fused segment drops the paper's extra factor 1/2; the
+mean direction is computed on unit vectors, never as a mean of angles across the 0/180 wrap;
+the merge threshold and the perpendicular-offset gate are additions (the paper gives neither;
+the gate keeps two parallel edges 2 px apart from fusing); merging repeats over the group until
+no score reaches the threshold, each score being computed against the current (already grown)
+baseline, so that a chain of pieces joins a baseline piece by piece.
+
+**Orientation.** Like LSD, each segment (x1, y1, x2, y2) points from its start to its end so
+that, on the image as displayed (y pointing down), the brighter side is on its left and the
+darker side on its right. Fused segments keep the orientation of their baseline.
+
+**Coordinates.** OpenCV's pixel-centre convention: pixel (i, j) is centred at (i, j).
+
+**Input.** 8-bit images with 1 channel (gray), 3 channels (BGR) or 4 channels (BGRA); colour
+images are converted to gray. Any other type, and an empty image, throw cv::Exception.
+
+**Threads.** Separate instances may run on separate threads. One instance keeps the sequence
+state and caches its base detector, so it must not be used from two threads at once.
+*/
+class CV_EXPORTS_W LSDAdvance : public Algorithm
+{
+public:
+    /** @brief How stage 1 (adaptive length suppression) runs. */
+    enum LengthFilterMode
+    {
+        LENGTH_FILTER_NONE = 0,       //!< keep every base segment
+        LENGTH_FILTER_ADAPTIVE = 1,   //!< per-frame threshold with alpha = 1 (each call independent)
+        /** per-frame threshold scaled by the inter-frame factor (default). For frame k of a sequence,
+        with N the counts of segments kept by stage 1 and r = (N(k-1) - N(k-2)) / N(k-2) (0 when
+        N(k-2) = 0): alpha = 1 - 0.2 (1 + r) when r < -0.1, 1 when |r| <= 0.1, and
+        min(1 + 0.1 (r - 0.1), 1.2) when r > 0.1; alpha = 1 on the first two frames. */
+        LENGTH_FILTER_INTERFRAME = 2
+    };
+
+    /** @brief Which angle bins may be grouped together in stage 2. */
+    enum AngleBinning
+    {
+        ANGLE_BINS_STRICT = 0,     //!< only segments of the same bin (the paper's rule)
+        ANGLE_BINS_NEIGHBOURS = 1  //!< also the two neighbouring bins, wrapping 180 deg to 0 (default)
+    };
+
+    /** @brief Detects line segments.
+
+    @param image 8-bit gray (CV_8UC1), BGR (CV_8UC3) or BGRA (CV_8UC4) image, not empty.
+    @param lines Output N x 1 array of CV_32FC4 (std::vector<cv::Vec4f> works):
+    (x1, y1, x2, y2) per segment, pixel-centre coordinates, oriented as LSD orients them (brighter
+    side on the left, see the class description).
+
+    Consecutive calls on one object form a sequence for LENGTH_FILTER_INTERFRAME; call reset()
+    before an unrelated image.
+    */
+    CV_WRAP virtual void detect(InputArray image, OutputArray lines) = 0;
+
+    /** @brief Forgets the sequence: the next detect() is the first frame (alpha = 1).
+
+    Setting a parameter that changes the counts of stage 1 (every base-detector parameter and
+    setLengthFilterMode) also resets the sequence.
+    */
+    CV_WRAP virtual void reset() = 0;
+
+    /** @brief Returns counts, the length threshold, alpha and stage times of the last detect(). */
+    CV_WRAP virtual LSDAdvanceStats getLastStats() const = 0;
+
+    /** @brief Refinement of the base LSD, one of cv::LineSegmentDetectorModes. Default LSD_REFINE_STD. */
+    CV_WRAP virtual void setLsdRefine(int refine) = 0;
+    CV_WRAP virtual int getLsdRefine() const = 0;
+    /** @brief Scale at which the base LSD reads the image, in (0, 1]. Default 0.8. */
+    CV_WRAP virtual void setLsdScale(double scale) = 0;
+    CV_WRAP virtual double getLsdScale() const = 0;
+    /** @brief Gaussian sigma of the base LSD is sigmaScale / scale; in (0, 100]. Default 0.6. */
+    CV_WRAP virtual void setLsdSigmaScale(double sigmaScale) = 0;
+    CV_WRAP virtual double getLsdSigmaScale() const = 0;
+    /** @brief Bound to the quantization error on the gradient norm, in [0, 255]. Default 2.0. */
+    CV_WRAP virtual void setLsdQuant(double quant) = 0;
+    CV_WRAP virtual double getLsdQuant() const = 0;
+    /** @brief Gradient angle tolerance of the base LSD in degrees, in (0, 180). Default 22.5. */
+    CV_WRAP virtual void setLsdAngleTolerance(double degrees) = 0;
+    CV_WRAP virtual double getLsdAngleTolerance() const = 0;
+    /** @brief Detection threshold -log10(NFA) > logEps, used with LSD_REFINE_ADV; in [-1000, 1000]. Default 0. */
+    CV_WRAP virtual void setLsdLogEps(double logEps) = 0;
+    CV_WRAP virtual double getLsdLogEps() const = 0;
+    /** @brief Minimal density of aligned points in a region's rectangle, in [0, 1). Default 0.7. */
+    CV_WRAP virtual void setLsdDensityThreshold(double density) = 0;
+    CV_WRAP virtual double getLsdDensityThreshold() const = 0;
+    /** @brief Number of bins in the pseudo-ordering of gradient modulus, in [1, 65536]. Default 1024. */
+    CV_WRAP virtual void setLsdNumBins(int bins) = 0;
+    CV_WRAP virtual int getLsdNumBins() const = 0;
+
+    /** @brief Stage 1 mode, one of LSDAdvance::LengthFilterMode. Default LENGTH_FILTER_INTERFRAME. */
+    CV_WRAP virtual void setLengthFilterMode(int mode) = 0;
+    CV_WRAP virtual int getLengthFilterMode() const = 0;
+
+    /** @brief Width of the angle bins of stage 2 in degrees, in [1, 90]. Default 10.
+
+    The undirected angle range [0, 180) is cut into ceil(180 / width) bins; when the width
+    does not divide 180 the last bin is narrower. */
+    CV_WRAP virtual void setAngleBinWidth(double degrees) = 0;
+    CV_WRAP virtual double getAngleBinWidth() const = 0;
+    /** @brief Which bins group together, one of LSDAdvance::AngleBinning. Default ANGLE_BINS_NEIGHBOURS. */
+    CV_WRAP virtual void setAngleBinning(int binning) = 0;
+    CV_WRAP virtual int getAngleBinning() const = 0;
+    /** @brief Two segments are adjacent when two of their endpoints are closer than this, in
+    pixels, in [0.1, 200]. Default 10. */
+    CV_WRAP virtual void setEndpointDistance(double pixels) = 0;
+    CV_WRAP virtual double getEndpointDistance() const = 0;
+
+    /** @brief Segments at least this share of the group's longest are baselines, in (0, 1]. Default 0.8. */
+    CV_WRAP virtual void setBaselineRatio(double ratio) = 0;
+    CV_WRAP virtual double getBaselineRatio() const = 0;
+    /** @brief Weight of the direction term of the score, in [0, 1]. Default 0.4. */
+    CV_WRAP virtual void setDirectionWeight(double weight) = 0;
+    CV_WRAP virtual double getDirectionWeight() const = 0;
+    /** @brief Weight of the proximity term of the score, in [0, 1]. Default 0.35. */
+    CV_WRAP virtual void setProximityWeight(double weight) = 0;
+    CV_WRAP virtual double getProximityWeight() const = 0;
+    /** @brief Weight of the length term of the score, in [0, 1]. Default 0.2. */
+    CV_WRAP virtual void setLengthWeight(double weight) = 0;
+    CV_WRAP virtual double getLengthWeight() const = 0;
+    /** @brief The proximity term reaches 0 at this share of the pair's mean length, in (0, 10]. Default 0.1. */
+    CV_WRAP virtual void setProximityRatio(double ratio) = 0;
+    CV_WRAP virtual double getProximityRatio() const = 0;
+    /** @brief A segment fuses into a baseline when its score reaches this, in [0, 1]. Default 0.6. */
+    CV_WRAP virtual void setMergeThreshold(double threshold) = 0;
+    CV_WRAP virtual double getMergeThreshold() const = 0;
+    /** @brief A segment fuses into a baseline only when both its endpoints lie within this
+    distance of the baseline's supporting line, in pixels, in [0, 100]. Default 1.5. */
+    CV_WRAP virtual void setMaxPerpendicularOffset(double pixels) = 0;
+    CV_WRAP virtual double getMaxPerpendicularOffset() const = 0;
+};
+
+/** @brief Creates an LSDAdvance detector; every other parameter has its documented default.
+
+@param lengthFilterMode Stage 1 mode, one of LSDAdvance::LengthFilterMode.
+@param endpointDistance Endpoint adjacency distance of stage 2, pixels, in [0.1, 200].
+@param mergeThreshold Score a segment needs to fuse into a baseline, in [0, 1].
+*/
+CV_EXPORTS_W Ptr<LSDAdvance> createLSDAdvance(int lengthFilterMode = LSDAdvance::LENGTH_FILTER_INTERFRAME,
+                                              double endpointDistance = 10.0,
+                                              double mergeThreshold = 0.6);
+
+//! @} lsd_advance
+
+}} // namespace cv::ximgproc
+
+#endif

@@ -1,0 +1,61 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Stage 1: adaptive length suppression with the inter-frame count factor.
+
+#include "precomp.hpp"
+
+namespace cv {
+namespace ximgproc {
+namespace lsda {
+
+double segmentLength(const Vec4f& s)
+{
+    return std::hypot((double)s[2] - s[0], (double)s[3] - s[1]);
+}
+
+double interFrameAlpha(int keptPrevious, int keptBeforePrevious)
+{
+    CV_CheckGE(keptPrevious, 0, "segment counts are not negative");
+    CV_CheckGE(keptBeforePrevious, 0, "segment counts are not negative");
+    if (keptBeforePrevious == 0)
+        return 1.0;
+    const double r = (double)(keptPrevious - keptBeforePrevious) / keptBeforePrevious;
+    if (r < -0.1)
+        return 1.0 - 0.2 * (1.0 + r);
+    if (r <= 0.1)
+        return 1.0;
+    return std::min(1.0 + 0.1 * (r - 0.1), 1.2);
+}
+
+double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha)
+{
+    if (segments.empty())
+        return 0.0;
+    double sum = 0.0, sumSq = 0.0;
+    for (const Vec4f& s : segments)
+    {
+        const double len = segmentLength(s);
+        sum += len;
+        sumSq += len * len;
+    }
+    const double n = (double)segments.size();
+    const double mean = sum / n;
+    if (mean <= 0.0)
+        return 0.0;
+    const double stddev = std::sqrt(std::max(sumSq / n - mean * mean, 0.0));
+    return std::max((1.0 - std::abs(mean - stddev) / mean) * mean * alpha, 0.0);
+}
+
+void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
+                       std::vector<Vec4f>& kept)
+{
+    kept.clear();
+    kept.reserve(segments.size());
+    for (const Vec4f& s : segments)
+        if (segmentLength(s) >= minLength)
+            kept.push_back(s);
+}
+
+}}} // namespace cv::ximgproc::lsda

@@ -1,0 +1,342 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// LSDAdvance: parameters and their validation, persistence, sequence state, and the order of
+// the stages. The stages themselves are in length_filter.cpp, segment_grouping.cpp and
+// segment_merging.cpp.
+
+#include "precomp.hpp"
+
+namespace cv {
+namespace ximgproc {
+
+namespace {
+
+// Throws unless lo <= value <= hi (or lo < value when loOpen, value < hi when hiOpen).
+void checkRange(const char* name, double value, double lo, bool loOpen, double hi, bool hiOpen,
+                const char* unit = "")
+{
+    const bool ok = std::isfinite(value) && (loOpen ? value > lo : value >= lo) &&
+                    (hiOpen ? value < hi : value <= hi);
+    if (!ok)
+        CV_Error_(Error::StsOutOfRange,
+                  ("LSDAdvance: %s must be a finite number in %c%g, %g%c%s%s, got %g", name,
+                   loOpen ? '(' : '[', lo, hi, hiOpen ? ')' : ']', *unit ? " " : "", unit, value));
+}
+
+void checkOneOf(const char* name, int value, int first, int last, const char* names)
+{
+    if (value < first || value > last)
+        CV_Error_(Error::StsOutOfRange,
+                  ("LSDAdvance: %s must be one of %s (%d..%d), got %d", name, names, first, last, value));
+}
+
+double elapsedMs(int64 since)
+{
+    return (double)(getTickCount() - since) * 1000.0 / getTickFrequency();
+}
+
+class LSDAdvanceImpl CV_FINAL : public LSDAdvance
+{
+public:
+    void detect(InputArray image, OutputArray lines) CV_OVERRIDE
+    {
+        CV_INSTRUMENT_REGION();
+        LSDAdvanceStats stats;
+
+        int64 t = getTickCount();
+        const Mat gray = lsda::toGray8U(image);
+        if (!baseLsd)
+            baseLsd = lsda::createBaseLsd(lsd);
+        std::vector<Vec4f> base;
+        baseLsd->detect(gray, base);
+        stats.baseSegments = (int)base.size();
+        stats.baseMs = elapsedMs(t);
+
+        t = getTickCount();
+        std::vector<Vec4f> kept;
+        if (lengthFilterMode == LENGTH_FILTER_NONE)
+            kept.swap(base);
+        else
+        {
+            stats.alpha = lengthFilterMode == LENGTH_FILTER_INTERFRAME && framesSeen >= 2
+                              ? lsda::interFrameAlpha(keptCounts[0], keptCounts[1])
+                              : 1.0;
+            stats.minLength = lsda::adaptiveMinLength(base, stats.alpha);
+            lsda::dropShortSegments(base, stats.minLength, kept);
+        }
+        stats.filteredSegments = (int)kept.size();
+        keptCounts[1] = keptCounts[0];
+        keptCounts[0] = stats.filteredSegments;
+        framesSeen = std::min(framesSeen + 1, 2);
+        stats.filterMs = elapsedMs(t);
+
+        t = getTickCount();
+        lsda::SegmentGroups groups;
+        lsda::groupSegments(kept, grouping, groups);
+        for (int g = 0; g < groups.count(); g++)
+            stats.mergeGroups += groups.offsets[g + 1] - groups.offsets[g] > 1;
+        stats.groupingMs = elapsedMs(t);
+
+        t = getTickCount();
+        std::vector<Vec4f> merged;
+        lsda::mergeGroups(kept, groups, merging, merged);
+        stats.outputSegments = (int)merged.size();
+        stats.mergingMs = elapsedMs(t);
+
+        Mat(merged).copyTo(lines);
+        lastStats = stats;
+    }
+
+    void reset() CV_OVERRIDE
+    {
+        framesSeen = 0;
+        keptCounts[0] = keptCounts[1] = 0;
+    }
+
+    LSDAdvanceStats getLastStats() const CV_OVERRIDE { return lastStats; }
+
+    void setLsdRefine(int v) CV_OVERRIDE
+    {
+        checkOneOf("lsdRefine", v, LSD_REFINE_NONE, LSD_REFINE_ADV,
+                   "LSD_REFINE_NONE, LSD_REFINE_STD, LSD_REFINE_ADV");
+        lsd.refine = v;
+        baseDetectorChanged();
+    }
+    int getLsdRefine() const CV_OVERRIDE { return lsd.refine; }
+    void setLsdScale(double v) CV_OVERRIDE
+    {
+        checkRange("lsdScale", v, 0, true, 1, false);
+        lsd.scale = v;
+        baseDetectorChanged();
+    }
+    double getLsdScale() const CV_OVERRIDE { return lsd.scale; }
+    void setLsdSigmaScale(double v) CV_OVERRIDE
+    {
+        checkRange("lsdSigmaScale", v, 0, true, 100, false);
+        lsd.sigmaScale = v;
+        baseDetectorChanged();
+    }
+    double getLsdSigmaScale() const CV_OVERRIDE { return lsd.sigmaScale; }
+    void setLsdQuant(double v) CV_OVERRIDE
+    {
+        checkRange("lsdQuant", v, 0, false, 255, false);
+        lsd.quant = v;
+        baseDetectorChanged();
+    }
+    double getLsdQuant() const CV_OVERRIDE { return lsd.quant; }
+    void setLsdAngleTolerance(double v) CV_OVERRIDE
+    {
+        checkRange("lsdAngleTolerance", v, 0, true, 180, true, "deg");
+        lsd.angleTolerance = v;
+        baseDetectorChanged();
+    }
+    double getLsdAngleTolerance() const CV_OVERRIDE { return lsd.angleTolerance; }
+    void setLsdLogEps(double v) CV_OVERRIDE
+    {
+        checkRange("lsdLogEps", v, -1000, false, 1000, false);
+        lsd.logEps = v;
+        baseDetectorChanged();
+    }
+    double getLsdLogEps() const CV_OVERRIDE { return lsd.logEps; }
+    void setLsdDensityThreshold(double v) CV_OVERRIDE
+    {
+        checkRange("lsdDensityThreshold", v, 0, false, 1, true);
+        lsd.densityThreshold = v;
+        baseDetectorChanged();
+    }
+    double getLsdDensityThreshold() const CV_OVERRIDE { return lsd.densityThreshold; }
+    void setLsdNumBins(int v) CV_OVERRIDE
+    {
+        checkRange("lsdNumBins", v, 1, false, 65536, false);
+        lsd.numBins = v;
+        baseDetectorChanged();
+    }
+    int getLsdNumBins() const CV_OVERRIDE { return lsd.numBins; }
+
+    void setLengthFilterMode(int v) CV_OVERRIDE
+    {
+        checkOneOf("lengthFilterMode", v, LENGTH_FILTER_NONE, LENGTH_FILTER_INTERFRAME,
+                   "LENGTH_FILTER_NONE, LENGTH_FILTER_ADAPTIVE, LENGTH_FILTER_INTERFRAME");
+        lengthFilterMode = v;
+        reset();
+    }
+    int getLengthFilterMode() const CV_OVERRIDE { return lengthFilterMode; }
+
+    void setAngleBinWidth(double v) CV_OVERRIDE
+    {
+        checkRange("angleBinWidth", v, 1, false, 90, false, "deg");
+        grouping.angleBinWidth = v;
+    }
+    double getAngleBinWidth() const CV_OVERRIDE { return grouping.angleBinWidth; }
+    void setAngleBinning(int v) CV_OVERRIDE
+    {
+        checkOneOf("angleBinning", v, ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS,
+                   "ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS");
+        grouping.neighbourBins = v == ANGLE_BINS_NEIGHBOURS;
+    }
+    int getAngleBinning() const CV_OVERRIDE
+    {
+        return grouping.neighbourBins ? ANGLE_BINS_NEIGHBOURS : ANGLE_BINS_STRICT;
+    }
+    void setEndpointDistance(double v) CV_OVERRIDE
+    {
+        checkRange("endpointDistance", v, 0.1, false, 200, false, "px");
+        grouping.endpointDistance = v;
+    }
+    double getEndpointDistance() const CV_OVERRIDE { return grouping.endpointDistance; }
+
+    void setBaselineRatio(double v) CV_OVERRIDE
+    {
+        checkRange("baselineRatio", v, 0, true, 1, false);
+        merging.baselineRatio = v;
+    }
+    double getBaselineRatio() const CV_OVERRIDE { return merging.baselineRatio; }
+    void setDirectionWeight(double v) CV_OVERRIDE
+    {
+        checkRange("directionWeight", v, 0, false, 1, false);
+        merging.directionWeight = v;
+    }
+    double getDirectionWeight() const CV_OVERRIDE { return merging.directionWeight; }
+    void setProximityWeight(double v) CV_OVERRIDE
+    {
+        checkRange("proximityWeight", v, 0, false, 1, false);
+        merging.proximityWeight = v;
+    }
+    double getProximityWeight() const CV_OVERRIDE { return merging.proximityWeight; }
+    void setLengthWeight(double v) CV_OVERRIDE
+    {
+        checkRange("lengthWeight", v, 0, false, 1, false);
+        merging.lengthWeight = v;
+    }
+    double getLengthWeight() const CV_OVERRIDE { return merging.lengthWeight; }
+    void setProximityRatio(double v) CV_OVERRIDE
+    {
+        checkRange("proximityRatio", v, 0, true, 10, false);
+        merging.proximityRatio = v;
+    }
+    double getProximityRatio() const CV_OVERRIDE { return merging.proximityRatio; }
+    void setMergeThreshold(double v) CV_OVERRIDE
+    {
+        checkRange("mergeThreshold", v, 0, false, 1, false);
+        merging.mergeThreshold = v;
+    }
+    double getMergeThreshold() const CV_OVERRIDE { return merging.mergeThreshold; }
+    void setMaxPerpendicularOffset(double v) CV_OVERRIDE
+    {
+        checkRange("maxPerpendicularOffset", v, 0, false, 100, false, "px");
+        merging.maxPerpendicularOffset = v;
+    }
+    double getMaxPerpendicularOffset() const CV_OVERRIDE { return merging.maxPerpendicularOffset; }
+
+    void write(FileStorage& fs) const CV_OVERRIDE
+    {
+        writeFormat(fs);
+        for (const IntParam& p : intParams())
+            fs << p.name << (this->*p.get)();
+        for (const RealParam& p : realParams())
+            fs << p.name << (this->*p.get)();
+    }
+
+    void read(const FileNode& fn) CV_OVERRIDE
+    {
+        for (const IntParam& p : intParams())
+        {
+            const FileNode node = fn[p.name];
+            if (node.empty())
+                continue;
+            if (!node.isInt())
+                CV_Error_(Error::StsParseError,
+                          ("LSDAdvance::read: %s must be an integer", p.name));
+            (this->*p.set)((int)node);
+        }
+        for (const RealParam& p : realParams())
+        {
+            const FileNode node = fn[p.name];
+            if (node.empty())
+                continue;
+            if (!node.isReal() && !node.isInt())
+                CV_Error_(Error::StsParseError, ("LSDAdvance::read: %s must be a number", p.name));
+            (this->*p.set)((double)node);
+        }
+    }
+
+    String getDefaultName() const CV_OVERRIDE { return "LSDAdvance"; }
+
+private:
+    struct IntParam
+    {
+        const char* name;
+        int (LSDAdvanceImpl::*get)() const;
+        void (LSDAdvanceImpl::*set)(int);
+    };
+    struct RealParam
+    {
+        const char* name;
+        double (LSDAdvanceImpl::*get)() const;
+        void (LSDAdvanceImpl::*set)(double);
+    };
+
+    // The persisted parameters: one table drives write() and read().
+    static const std::vector<IntParam>& intParams()
+    {
+        static const std::vector<IntParam> params = {
+            { "lsdRefine", &LSDAdvanceImpl::getLsdRefine, &LSDAdvanceImpl::setLsdRefine },
+            { "lsdNumBins", &LSDAdvanceImpl::getLsdNumBins, &LSDAdvanceImpl::setLsdNumBins },
+            { "lengthFilterMode", &LSDAdvanceImpl::getLengthFilterMode, &LSDAdvanceImpl::setLengthFilterMode },
+            { "angleBinning", &LSDAdvanceImpl::getAngleBinning, &LSDAdvanceImpl::setAngleBinning },
+        };
+        return params;
+    }
+    static const std::vector<RealParam>& realParams()
+    {
+        static const std::vector<RealParam> params = {
+            { "lsdScale", &LSDAdvanceImpl::getLsdScale, &LSDAdvanceImpl::setLsdScale },
+            { "lsdSigmaScale", &LSDAdvanceImpl::getLsdSigmaScale, &LSDAdvanceImpl::setLsdSigmaScale },
+            { "lsdQuant", &LSDAdvanceImpl::getLsdQuant, &LSDAdvanceImpl::setLsdQuant },
+            { "lsdAngleTolerance", &LSDAdvanceImpl::getLsdAngleTolerance, &LSDAdvanceImpl::setLsdAngleTolerance },
+            { "lsdLogEps", &LSDAdvanceImpl::getLsdLogEps, &LSDAdvanceImpl::setLsdLogEps },
+            { "lsdDensityThreshold", &LSDAdvanceImpl::getLsdDensityThreshold, &LSDAdvanceImpl::setLsdDensityThreshold },
+            { "angleBinWidth", &LSDAdvanceImpl::getAngleBinWidth, &LSDAdvanceImpl::setAngleBinWidth },
+            { "endpointDistance", &LSDAdvanceImpl::getEndpointDistance, &LSDAdvanceImpl::setEndpointDistance },
+            { "baselineRatio", &LSDAdvanceImpl::getBaselineRatio, &LSDAdvanceImpl::setBaselineRatio },
+            { "directionWeight", &LSDAdvanceImpl::getDirectionWeight, &LSDAdvanceImpl::setDirectionWeight },
+            { "proximityWeight", &LSDAdvanceImpl::getProximityWeight, &LSDAdvanceImpl::setProximityWeight },
+            { "lengthWeight", &LSDAdvanceImpl::getLengthWeight, &LSDAdvanceImpl::setLengthWeight },
+            { "proximityRatio", &LSDAdvanceImpl::getProximityRatio, &LSDAdvanceImpl::setProximityRatio },
+            { "mergeThreshold", &LSDAdvanceImpl::getMergeThreshold, &LSDAdvanceImpl::setMergeThreshold },
+            { "maxPerpendicularOffset", &LSDAdvanceImpl::getMaxPerpendicularOffset, &LSDAdvanceImpl::setMaxPerpendicularOffset },
+        };
+        return params;
+    }
+
+    void baseDetectorChanged()
+    {
+        baseLsd.release();
+        reset();
+    }
+
+    lsda::LsdParams lsd;
+    int lengthFilterMode = LENGTH_FILTER_INTERFRAME;
+    lsda::GroupingParams grouping;
+    lsda::MergeParams merging;
+
+    Ptr<LineSegmentDetector> baseLsd;
+    int framesSeen = 0;
+    int keptCounts[2] = { 0, 0 };  // kept by stage 1 in frames k-1 and k-2
+    LSDAdvanceStats lastStats;
+};
+
+} // namespace
+
+Ptr<LSDAdvance> createLSDAdvance(int lengthFilterMode, double endpointDistance, double mergeThreshold)
+{
+    Ptr<LSDAdvance> detector = makePtr<LSDAdvanceImpl>();
+    detector->setLengthFilterMode(lengthFilterMode);
+    detector->setEndpointDistance(endpointDistance);
+    detector->setMergeThreshold(mergeThreshold);
+    return detector;
+}
+
+}} // namespace cv::ximgproc

@@ -1,0 +1,125 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// Horizontal segments with the given lengths.
+std::vector<Vec4f> segmentsOfLengths(const std::vector<double>& lengths)
+{
+    std::vector<Vec4f> segments;
+    for (size_t i = 0; i < lengths.size(); i++)
+        segments.push_back(segmentAt(10, 10 + 3.0 * i, 0, lengths[i]));
+    return segments;
+}
+
+// Mean and population standard deviation, computed independently of the module.
+void meanAndStd(const std::vector<double>& v, double& mean, double& stddev)
+{
+    mean = std::accumulate(v.begin(), v.end(), 0.0) / v.size();
+    double ss = 0;
+    for (double x : v)
+        ss += (x - mean) * (x - mean);
+    stddev = std::sqrt(ss / v.size());
+}
+
+TEST(LSDAdvance_LengthFilter, minLength_is_std_times_alpha_when_std_below_mean)
+{
+    const std::vector<double> lengths = { 10, 20, 30, 40 };
+    double mean, stddev;
+    meanAndStd(lengths, mean, stddev);
+    ASSERT_LT(stddev, mean);
+    EXPECT_NEAR(lsda::adaptiveMinLength(segmentsOfLengths(lengths), 1.0), stddev, 1e-4);
+    EXPECT_NEAR(lsda::adaptiveMinLength(segmentsOfLengths(lengths), 0.85), 0.85 * stddev, 1e-4);
+}
+
+TEST(LSDAdvance_LengthFilter, minLength_is_two_mean_minus_std_when_std_above_mean)
+{
+    const std::vector<double> lengths = { 1, 1, 1, 1, 100 };
+    double mean, stddev;
+    meanAndStd(lengths, mean, stddev);
+    ASSERT_GT(stddev, mean);
+    ASSERT_LT(stddev, 2 * mean);
+    EXPECT_NEAR(lsda::adaptiveMinLength(segmentsOfLengths(lengths), 1.2), (2 * mean - stddev) * 1.2, 1e-4);
+}
+
+TEST(LSDAdvance_LengthFilter, minLength_clamps_to_zero_when_std_above_twice_mean)
+{
+    std::vector<double> lengths(9, 1.0);
+    lengths.push_back(1000);
+    double mean, stddev;
+    meanAndStd(lengths, mean, stddev);
+    ASSERT_GT(stddev, 2 * mean);
+    EXPECT_EQ(0.0, lsda::adaptiveMinLength(segmentsOfLengths(lengths), 1.0));
+}
+
+TEST(LSDAdvance_LengthFilter, minLength_is_zero_without_segments)
+{
+    EXPECT_EQ(0.0, lsda::adaptiveMinLength(std::vector<Vec4f>(), 1.0));
+}
+
+TEST(LSDAdvance_LengthFilter, minLength_is_zero_for_zero_length_segments)
+{
+    const std::vector<Vec4f> points(5, Vec4f(3, 4, 3, 4));
+    EXPECT_EQ(0.0, lsda::adaptiveMinLength(points, 1.0));
+    std::vector<Vec4f> kept;
+    lsda::dropShortSegments(points, 0.0, kept);
+    EXPECT_EQ(points.size(), kept.size());
+}
+
+TEST(LSDAdvance_LengthFilter, drops_only_segments_shorter_than_minLength_and_keeps_order)
+{
+    const std::vector<Vec4f> segments = segmentsOfLengths({ 5, 30, 12, 12.5, 40 });
+    std::vector<Vec4f> kept;
+    lsda::dropShortSegments(segments, 12.0, kept);
+    ASSERT_EQ(4u, kept.size());
+    EXPECT_EQ(segments[1], kept[0]);
+    EXPECT_EQ(segments[2], kept[1]);  // exactly minLength is kept
+    EXPECT_EQ(segments[3], kept[2]);
+    EXPECT_EQ(segments[4], kept[3]);
+}
+
+TEST(LSDAdvance_InterFrameAlpha, is_one_inside_the_dead_band_including_its_edges)
+{
+    EXPECT_EQ(1.0, lsda::interFrameAlpha(100, 100));
+    EXPECT_EQ(1.0, lsda::interFrameAlpha(90, 100));   // r = -0.1
+    EXPECT_EQ(1.0, lsda::interFrameAlpha(110, 100));  // r = +0.1
+}
+
+TEST(LSDAdvance_InterFrameAlpha, falls_below_one_just_under_minus_ten_percent)
+{
+    // r = -0.11: alpha = 1 - 0.2 * 0.89; the rule jumps at r = -0.1 as the paper prints it.
+    EXPECT_NEAR(1.0 - 0.2 * 0.89, lsda::interFrameAlpha(89, 100), 1e-12);
+    // r = -1 (no segment kept last frame): 1 - 0.2 * 0 = 1.
+    EXPECT_NEAR(1.0, lsda::interFrameAlpha(0, 100), 1e-12);
+    EXPECT_NEAR(1.0 - 0.2 * 0.5, lsda::interFrameAlpha(50, 100), 1e-12);
+}
+
+TEST(LSDAdvance_InterFrameAlpha, grows_above_ten_percent_and_is_capped)
+{
+    EXPECT_NEAR(1.0 + 0.1 * (0.5 - 0.1), lsda::interFrameAlpha(150, 100), 1e-12);
+    EXPECT_NEAR(1.2, lsda::interFrameAlpha(1000, 100), 1e-12);   // r = 9
+    EXPECT_NEAR(1.2, lsda::interFrameAlpha(310, 100), 1e-12);    // r = 2.1, the cap's edge
+    EXPECT_LT(lsda::interFrameAlpha(300, 100), 1.2);             // r = 2.0
+}
+
+TEST(LSDAdvance_InterFrameAlpha, is_one_when_the_older_count_is_zero)
+{
+    EXPECT_EQ(1.0, lsda::interFrameAlpha(0, 0));
+    EXPECT_EQ(1.0, lsda::interFrameAlpha(500, 0));
+}
+
+TEST(LSDAdvance_InterFrameAlpha, stays_in_its_documented_range_for_all_ratios)
+{
+    for (int previous = 0; previous <= 400; previous += 7)
+    {
+        SCOPED_TRACE(previous);
+        const double alpha = lsda::interFrameAlpha(previous, 100);
+        EXPECT_GT(alpha, 0.0);
+        EXPECT_LE(alpha, 1.2);
+    }
+}
+
+}} // namespace

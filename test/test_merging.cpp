@@ -1,0 +1,221 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// Groups with the default parameters, then merges with the given ones.
+std::vector<Vec4f> groupAndMerge(const std::vector<Vec4f>& segments, const lsda::MergeParams& params,
+                                 bool neighbourBins = true)
+{
+    lsda::GroupingParams grouping;
+    grouping.neighbourBins = neighbourBins;
+    lsda::SegmentGroups groups;
+    lsda::groupSegments(segments, grouping, groups);
+    std::vector<Vec4f> merged;
+    lsda::mergeGroups(segments, groups, params, merged);
+    return merged;
+}
+
+void expectSegmentNear(const Vec4f& expected, const Vec4f& actual, double tolerance)
+{
+    for (int i = 0; i < 4; i++)
+        EXPECT_NEAR(expected[i], actual[i], tolerance) << "coordinate " << i << " of " << actual;
+}
+
+TEST(LSDAdvance_Similarity, distance_is_the_smallest_endpoint_to_segment_distance)
+{
+    EXPECT_NEAR(5.0, lsda::segmentDistance(Vec4f(0, 0, 100, 0), Vec4f(105, 0, 150, 0)), 1e-9);
+    // An endpoint above the middle of the other segment: perpendicular distance.
+    EXPECT_NEAR(3.0, lsda::segmentDistance(Vec4f(0, 0, 100, 0), Vec4f(50, 3, 50, 40)), 1e-9);
+    EXPECT_NEAR(5.0, lsda::segmentDistance(Vec4f(0, 0, 100, 0), Vec4f(103, 4, 140, 4)), 1e-9);
+}
+
+TEST(LSDAdvance_Similarity, perpendicular_offset_is_measured_to_the_supporting_line)
+{
+    EXPECT_NEAR(2.0, lsda::perpendicularOffset(Vec4f(0, 0, 100, 0), Vec4f(150, 2, 200, 2)), 1e-9);
+    EXPECT_NEAR(3.0, lsda::perpendicularOffset(Vec4f(0, 0, 100, 0), Vec4f(150, -1, 200, 3)), 1e-9);
+}
+
+TEST(LSDAdvance_Similarity, direction_term_is_the_clipped_directed_cosine)
+{
+    const Vec4f base(0, 0, 100, 0);
+    EXPECT_NEAR(1.0, lsda::similarityTerms(base, segmentAt(110, 0, 0, 50), 0.1).direction, 1e-6);
+    EXPECT_NEAR(0.5, lsda::similarityTerms(base, segmentAt(110, 0, 60, 50), 0.1).direction, 1e-6);
+    // Opposite polarity (the other side of a thin bar) scores 0, not 1.
+    EXPECT_NEAR(0.0, lsda::similarityTerms(base, segmentAt(160, 0, 180, 50), 0.1).direction, 1e-6);
+    EXPECT_NEAR(0.0, lsda::similarityTerms(base, segmentAt(110, 0, 120, 50), 0.1).direction, 1e-6);
+}
+
+TEST(LSDAdvance_Similarity, proximity_term_falls_linearly_to_zero_at_the_threshold)
+{
+    const Vec4f base(0, 0, 100, 0);
+    // Lengths 100 and 60: Dth = 0.1 * 80 = 8 px.
+    EXPECT_NEAR(1.0 - 2.0 / 8.0, lsda::similarityTerms(base, Vec4f(102, 0, 162, 0), 0.1).proximity, 1e-6);
+    EXPECT_NEAR(1.0 - 6.0 / 8.0, lsda::similarityTerms(base, Vec4f(106, 0, 166, 0), 0.1).proximity, 1e-6);
+    EXPECT_NEAR(0.0, lsda::similarityTerms(base, Vec4f(109, 0, 169, 0), 0.1).proximity, 1e-6);
+    // proximityRatio 0.2 doubles Dth.
+    EXPECT_NEAR(1.0 - 6.0 / 16.0, lsda::similarityTerms(base, Vec4f(106, 0, 166, 0), 0.2).proximity, 1e-6);
+}
+
+TEST(LSDAdvance_Similarity, length_term_is_one_minus_the_relative_difference)
+{
+    const Vec4f base(0, 0, 100, 0);
+    EXPECT_NEAR(0.6, lsda::similarityTerms(base, Vec4f(102, 0, 162, 0), 0.1).length, 1e-6);
+    EXPECT_NEAR(1.0, lsda::similarityTerms(base, Vec4f(102, 0, 202, 0), 0.1).length, 1e-6);
+    EXPECT_NEAR(0.5, lsda::similarityTerms(Vec4f(102, 0, 152, 0), base, 0.1).length, 1e-6);
+}
+
+TEST(LSDAdvance_Similarity, score_weights_the_three_terms)
+{
+    lsda::MergeParams p;
+    const lsda::SimilarityTerms t = { 1.0, 0.5, 0.25 };
+    EXPECT_NEAR(0.4 * 1.0 + 0.35 * 0.5 + 0.2 * 0.25, lsda::similarityScore(t, p), 1e-12);
+    p.directionWeight = 0.1;
+    p.proximityWeight = 0.2;
+    p.lengthWeight = 0.7;
+    EXPECT_NEAR(0.1 + 0.1 + 0.175, lsda::similarityScore(t, p), 1e-12);
+}
+
+TEST(LSDAdvance_Fusion, collinear_pieces_fuse_into_their_span)
+{
+    const Vec4f fused = lsda::fuseSegments(Vec4f(0, 0, 100, 0), Vec4f(105, 0, 155, 0));
+    expectSegmentNear(Vec4f(0, 0, 155, 0), fused, 1e-4);
+}
+
+TEST(LSDAdvance_Fusion, line_passes_through_the_length_weighted_centre)
+{
+    // Base along y = 0 (length 100), piece along y = 0.6 (length 50): centre y = 0.2.
+    const Vec4f fused = lsda::fuseSegments(Vec4f(0, 0, 100, 0), Vec4f(110, 0.6f, 160, 0.6f));
+    EXPECT_NEAR(0.2, fused[1], 1e-4);
+    EXPECT_NEAR(0.2, fused[3], 1e-4);
+    EXPECT_NEAR(0.0, fused[0], 1e-4);
+    EXPECT_NEAR(160.0, fused[2], 1e-4);
+}
+
+TEST(LSDAdvance_Fusion, keeps_the_baseline_orientation)
+{
+    // The other piece is reversed; the result points like the baseline (+x).
+    const Vec4f fused = lsda::fuseSegments(Vec4f(0, 0, 100, 0), Vec4f(150, 0, 110, 0));
+    expectSegmentNear(Vec4f(0, 0, 150, 0), fused, 1e-4);
+    const Vec4f reversed = lsda::fuseSegments(Vec4f(100, 0, 0, 0), Vec4f(110, 0, 150, 0));
+    expectSegmentNear(Vec4f(150, 0, 0, 0), reversed, 1e-4);
+}
+
+TEST(LSDAdvance_Fusion, direction_is_the_length_weighted_mean_across_the_0_180_wrap)
+{
+    // Directed angles 179.5 and 180.5 deg (undirected 179.5 and 0.5): a naive mean of the
+    // undirected angles would give 90 deg; the weighted mean direction is 179.5 + 1/3 deg.
+    const Vec4f base = segmentAt(100, 50, 179.5, 100);
+    const Vec4f piece = segmentAt(base[2] - 3, base[3], 180.5, 50);
+    const Vec4f fused = lsda::fuseSegments(base, piece);
+    const double angle = std::atan2(fused[3] - fused[1], fused[2] - fused[0]) * 180.0 / CV_PI;
+    EXPECT_NEAR(179.5 + 1.0 / 3.0, angle, 0.01);
+    EXPECT_LT(fused[2], fused[0]);  // still points like the baseline (-x)
+}
+
+TEST(LSDAdvance_Merging, long_edge_broken_into_collinear_pieces_becomes_one_segment)
+{
+    // Pieces of a line y = 20 + 0.1 x with 3 px gaps; only the longest is a baseline, the
+    // others join it one after the other.
+    const double angle = std::atan(0.1) * 180.0 / CV_PI;
+    const double step = std::cos(std::atan(0.1));
+    std::vector<Vec4f> segments;
+    const double starts[] = { 0, 203, 300, 357 }, lengths[] = { 200, 94, 54, 117 };
+    for (int i = 0; i < 4; i++)
+        segments.push_back(segmentAt(starts[i] * step, 20 + 0.1 * starts[i] * step, angle, lengths[i]));
+    const std::vector<Vec4f> merged = groupAndMerge(segments, lsda::MergeParams());
+    ASSERT_EQ(1u, merged.size());
+    const Vec4f truth(segments[0][0], segments[0][1], segments[3][2], segments[3][3]);
+    expectSegmentNear(truth, merged[0], 1.0);
+}
+
+TEST(LSDAdvance_Merging, pieces_straddling_a_bin_edge_merge_with_neighbour_bins)
+{
+    const Vec4f base = segmentAt(0, 0, 9.95, 150);
+    const Vec4f piece = segmentAt(base[2] + 2 * std::cos(0.1745), base[3] + 2 * std::sin(0.1745), 10.05, 60);
+    EXPECT_EQ(1u, groupAndMerge({ base, piece }, lsda::MergeParams(), true).size());
+    EXPECT_EQ(2u, groupAndMerge({ base, piece }, lsda::MergeParams(), false).size());
+}
+
+TEST(LSDAdvance_Merging, parallel_edges_2px_apart_stay_two)
+{
+    // Same polarity, overlapping, 2 px apart: close enough to score, stopped by the gate.
+    const std::vector<Vec4f> segments = { Vec4f(0, 0, 200, 0), Vec4f(195, 2, 265, 2) };
+    lsda::MergeParams params;
+    ASSERT_GE(lsda::similarityScore(lsda::similarityTerms(segments[0], segments[1], params.proximityRatio), params),
+              params.mergeThreshold);
+    EXPECT_EQ(2u, groupAndMerge(segments, params).size());
+    params.maxPerpendicularOffset = 2.5;
+    EXPECT_EQ(1u, groupAndMerge(segments, params).size());
+}
+
+TEST(LSDAdvance_Merging, baselines_never_merge_with_each_other)
+{
+    // Two collinear pieces of equal length, 2 px apart: both are baselines.
+    const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 202, 0) };
+    EXPECT_EQ(2u, groupAndMerge(segments, lsda::MergeParams()).size());
+    // With a piece of 85 px (>= 0.8 * 100) the same holds; with baselineRatio 0.9 it fuses.
+    const std::vector<Vec4f> shorter = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 187, 0) };
+    lsda::MergeParams params;
+    EXPECT_EQ(2u, groupAndMerge(shorter, params).size());
+    params.baselineRatio = 0.9;
+    EXPECT_EQ(1u, groupAndMerge(shorter, params).size());
+}
+
+TEST(LSDAdvance_Merging, merge_threshold_controls_fusion)
+{
+    // Score of the piece: 0.4 * 1 + 0.35 * (1 - 3 / 7.5) + 0.2 * 0.5 = 0.71.
+    const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
+    lsda::MergeParams params;
+    params.mergeThreshold = 0.70;
+    EXPECT_EQ(1u, groupAndMerge(segments, params).size());
+    params.mergeThreshold = 0.72;
+    EXPECT_EQ(2u, groupAndMerge(segments, params).size());
+}
+
+TEST(LSDAdvance_Merging, weights_and_proximity_ratio_change_the_outcome)
+{
+    const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
+    lsda::MergeParams params;
+    params.mergeThreshold = 0.8;
+    EXPECT_EQ(2u, groupAndMerge(segments, params).size());
+    lsda::MergeParams direction = params;
+    direction.directionWeight = 0.8;   // 0.8 + 0.21 + 0.1
+    EXPECT_EQ(1u, groupAndMerge(segments, direction).size());
+    lsda::MergeParams proximity = params;
+    proximity.proximityWeight = 0.7;   // 0.4 + 0.42 + 0.1
+    EXPECT_EQ(1u, groupAndMerge(segments, proximity).size());
+    lsda::MergeParams length = params;
+    length.lengthWeight = 0.6;         // 0.4 + 0.21 + 0.3
+    EXPECT_EQ(1u, groupAndMerge(segments, length).size());
+    lsda::MergeParams ratio = params;
+    ratio.proximityRatio = 1.0;        // Dth = 75: 0.4 + 0.35 * 0.96 + 0.1
+    EXPECT_EQ(1u, groupAndMerge(segments, ratio).size());
+}
+
+TEST(LSDAdvance_Merging, best_scores_fuse_first_into_their_best_baseline)
+{
+    // Two baselines, one piece closer to the second: it fuses there, not into the first.
+    const std::vector<Vec4f> segments = {
+        Vec4f(0, 0, 100, 0), Vec4f(180, 0.5f, 280, 0.5f), Vec4f(106, 0.25f, 176, 0.25f) };
+    const std::vector<Vec4f> merged = groupAndMerge(segments, lsda::MergeParams());
+    ASSERT_EQ(2u, merged.size());
+    expectSegmentNear(Vec4f(0, 0, 100, 0), merged[0], 1e-4);
+    EXPECT_NEAR(106, merged[1][0], 0.1);
+    EXPECT_NEAR(280, merged[1][2], 0.1);
+}
+
+TEST(LSDAdvance_Merging, single_segments_and_zero_length_segments_pass_through)
+{
+    const std::vector<Vec4f> segments = { Vec4f(5, 5, 5, 5), Vec4f(5, 5, 5, 5), Vec4f(300, 300, 400, 300) };
+    const std::vector<Vec4f> merged = groupAndMerge(segments, lsda::MergeParams());
+    ASSERT_EQ(3u, merged.size());
+    for (const Vec4f& s : merged)
+        for (int i = 0; i < 4; i++)
+            EXPECT_TRUE(std::isfinite(s[i]));
+}
+
+}} // namespace

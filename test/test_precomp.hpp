@@ -1,0 +1,47 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_LSD_ADVANCE_TEST_PRECOMP_HPP
+#define OPENCV_LSD_ADVANCE_TEST_PRECOMP_HPP
+
+#include "opencv2/ts.hpp"
+#include "opencv2/lsd_advance.hpp"
+#include "opencv2/imgproc.hpp"
+#include "opencv2/imgcodecs.hpp"
+#include "../src/stages.hpp"
+
+#include <functional>
+#include <numeric>
+
+namespace opencv_test {
+using namespace cv::ximgproc;
+
+//! Share of segments at least minLength pixels long (0 for none).
+inline double longSegmentShare(const std::vector<Vec4f>& lines, double minLength = 60.0)
+{
+    if (lines.empty())
+        return 0.0;
+    size_t longOnes = 0;
+    for (const Vec4f& l : lines)
+        longOnes += lsda::segmentLength(l) >= minLength;
+    return (double)longOnes / (double)lines.size();
+}
+
+//! Undirected angle of a segment in degrees, in [0, 180).
+inline double undirectedAngle(const Vec4f& s)
+{
+    double a = std::atan2((double)s[3] - s[1], (double)s[2] - s[0]) * 180.0 / CV_PI;
+    return a < 0 ? a + 180.0 : (a >= 180.0 ? a - 180.0 : a);
+}
+
+//! A segment of the given length starting at (x, y) with the given directed angle (degrees).
+inline Vec4f segmentAt(double x, double y, double angleDeg, double length)
+{
+    const double a = angleDeg * CV_PI / 180.0;
+    return Vec4f((float)x, (float)y, (float)(x + length * std::cos(a)), (float)(y + length * std::sin(a)));
+}
+
+} // namespace opencv_test
+
+#endif
