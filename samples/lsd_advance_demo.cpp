@@ -2,11 +2,13 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Detects line segments with OpenCV's LSD and with LSDAdvance on one image, prints the count,
-// the share of long segments and the median time of each, and writes both results side by side.
+// Detects line segments with OpenCV's LSD and with LSDAdvance on one image (or each image of a
+// folder), prints segments per image, the share of long segments and the median time of each,
+// and writes both results for the (first) image side by side.
 
 #include <opencv2/lsd_advance.hpp>
 #include <opencv2/core/utility.hpp>
+#include <opencv2/core/utils/filesystem.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <algorithm>
@@ -17,6 +19,12 @@
 using namespace cv;
 
 namespace {
+
+double median(std::vector<double> values)
+{
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
 
 struct Run
 {
@@ -36,18 +44,29 @@ Run timeDetection(const std::function<void(std::vector<Vec4f>&)>& detect, int re
         tm.stop();
         ms.push_back(tm.getTimeMilli());
     }
-    std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-    run.medianMs = ms[ms.size() / 2];
+    run.medianMs = median(ms);
     return run;
 }
 
-double longShare(const std::vector<Vec4f>& lines, double minLength)
+// Segment counts, long segments and per-image median times of one method over all images.
+struct Totals
 {
-    if (lines.empty())
-        return 0.0;
-    const auto isLong = [&](const Vec4f& l) { return std::hypot(l[2] - l[0], l[3] - l[1]) >= minLength; };
-    return (double)std::count_if(lines.begin(), lines.end(), isLong) / (double)lines.size();
-}
+    size_t segments = 0, longSegments = 0;
+    std::vector<double> ms;
+
+    void add(const Run& run, double longLength)
+    {
+        segments += run.lines.size();
+        for (const Vec4f& l : run.lines)
+            longSegments += std::hypot(l[2] - l[0], l[3] - l[1]) >= longLength;
+        ms.push_back(run.medianMs);
+    }
+    void print(const char* name, size_t images) const
+    {
+        std::printf("%-12s %17.1f %12.3f %18.2f\n", name, (double)segments / images,
+                    segments ? (double)longSegments / segments : 0.0, median(ms));
+    }
+};
 
 Mat panel(const Ptr<LineSegmentDetector>& drawer, const Mat& gray, const std::vector<Vec4f>& lines,
           const std::string& title)
@@ -66,10 +85,10 @@ int main(int argc, char** argv)
 {
     const String keys =
         "{help h   |                      | print this help }"
-        "{image i  | building.jpg         | input image (found with cv::samples::findFile) }"
-        "{output o | lsd_advance_demo.png | side-by-side picture: LSD left, LSDAdvance right }"
+        "{image i  | building.jpg         | input image (found with cv::samples::findFile), or a folder of .jpg/.png images }"
+        "{output o | lsd_advance_demo.png | side-by-side picture of the (first) image: LSD left, LSDAdvance right }"
         "{params p |                      | optional YAML/XML file of LSDAdvance parameters saved with write() }"
-        "{repeats  | 11                   | detections per method; the median time is printed }"
+        "{repeats  | 11                   | detections per method and image; the median time is used }"
         "{long     | 60                   | length in pixels from which a segment counts as long }";
     CommandLineParser parser(argc, argv, keys);
     parser.about("LSDAdvance demo: fewer, longer line segments than LSD, at about LSD's cost.");
@@ -78,7 +97,7 @@ int main(int argc, char** argv)
         parser.printMessage();
         return 0;
     }
-    const String imagePath = samples::findFile(parser.get<String>("image"));
+    const String input = parser.get<String>("image");
     const String outputPath = parser.get<String>("output");
     const String paramsPath = parser.get<String>("params");
     const int repeats = std::max(1, parser.get<int>("repeats"));
@@ -89,10 +108,22 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    const Mat gray = imread(imagePath, IMREAD_GRAYSCALE);
-    if (gray.empty())
+    std::vector<String> paths;
+    if (utils::fs::isDirectory(input))
     {
-        std::cerr << "Cannot read " << imagePath << std::endl;
+        for (const char* pattern : { "/*.jpg", "/*.png" })
+        {
+            std::vector<String> found;
+            glob(input + pattern, found, false);
+            paths.insert(paths.end(), found.begin(), found.end());
+        }
+        std::sort(paths.begin(), paths.end());
+    }
+    else
+        paths.push_back(samples::findFile(input));
+    if (paths.empty())
+    {
+        std::cerr << "No .jpg or .png image in " << input << std::endl;
         return 1;
     }
 
@@ -109,31 +140,47 @@ int main(int argc, char** argv)
         advance->read(fs.root());
     }
 
-    const Run lsdRun = timeDetection([&](std::vector<Vec4f>& lines) { lsd->detect(gray, lines); }, repeats);
-    // Each repetition is an independent image, not the next frame of a sequence.
-    const Run advanceRun = timeDetection([&](std::vector<Vec4f>& lines) {
-        advance->reset();
-        advance->detect(gray, lines);
-    }, repeats);
-
-    std::cout << "image: " << imagePath << " (" << gray.cols << "x" << gray.rows << ")\n";
-    std::printf("%-12s %9s %12s %11s\n", "method", "segments", "long share", "median ms");
-    std::printf("%-12s %9zu %12.3f %11.2f\n", "LSD", lsdRun.lines.size(),
-                longShare(lsdRun.lines, longLength), lsdRun.medianMs);
-    std::printf("%-12s %9zu %12.3f %11.2f\n", "LSDAdvance", advanceRun.lines.size(),
-                longShare(advanceRun.lines, longLength), advanceRun.medianMs);
-    std::printf("time ratio LSDAdvance / LSD: %.2f (median of %d runs each)\n",
-                advanceRun.medianMs / lsdRun.medianMs, repeats);
-
-    Mat sideBySide;
-    hconcat(panel(lsd, gray, lsdRun.lines, format("LSD: %zu segments", lsdRun.lines.size())),
-            panel(lsd, gray, advanceRun.lines, format("LSDAdvance: %zu segments", advanceRun.lines.size())),
-            sideBySide);
-    if (!imwrite(outputPath, sideBySide))
+    Totals lsdTotals, advanceTotals;
+    std::vector<double> ratios;
+    for (size_t k = 0; k < paths.size(); k++)
     {
-        std::cerr << "Cannot write " << outputPath << std::endl;
-        return 1;
+        const Mat gray = imread(paths[k], IMREAD_GRAYSCALE);
+        if (gray.empty())
+        {
+            std::cerr << "Cannot read " << paths[k] << std::endl;
+            return 1;
+        }
+        const Run lsdRun = timeDetection([&](std::vector<Vec4f>& lines) { lsd->detect(gray, lines); }, repeats);
+        // Every image is independent, not the next frame of a sequence.
+        const Run advanceRun = timeDetection([&](std::vector<Vec4f>& lines) {
+            advance->reset();
+            advance->detect(gray, lines);
+        }, repeats);
+        lsdTotals.add(lsdRun, longLength);
+        advanceTotals.add(advanceRun, longLength);
+        ratios.push_back(advanceRun.medianMs / lsdRun.medianMs);
+
+        if (k == 0)
+        {
+            Mat sideBySide;
+            hconcat(panel(lsd, gray, lsdRun.lines, format("LSD: %zu segments", lsdRun.lines.size())),
+                    panel(lsd, gray, advanceRun.lines, format("LSDAdvance: %zu segments", advanceRun.lines.size())),
+                    sideBySide);
+            if (!imwrite(outputPath, sideBySide))
+            {
+                std::cerr << "Cannot write " << outputPath << std::endl;
+                return 1;
+            }
+        }
     }
+
+    std::cout << (paths.size() == 1 ? "image: " + paths[0] : format("images: %zu in %s", paths.size(), input.c_str()))
+              << "\n";
+    std::printf("%-12s %17s %12s %18s\n", "method", "segments / image", "long share", "median ms / image");
+    lsdTotals.print("LSD", paths.size());
+    advanceTotals.print("LSDAdvance", paths.size());
+    std::printf("time ratio LSDAdvance / LSD: %.2f (median over images of per-image medians of %d runs)\n",
+                median(ratios), repeats);
     std::cout << "wrote " << outputPath << std::endl;
     return 0;
 }

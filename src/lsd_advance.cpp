@@ -13,23 +13,55 @@ namespace ximgproc {
 
 namespace {
 
-// Throws unless lo <= value <= hi (or lo < value when loOpen, value < hi when hiOpen).
-void checkRange(const char* name, double value, double lo, bool loOpen, double hi, bool hiOpen,
-                const char* unit = "")
+// The valid range of a parameter; the bounds are excluded where loOpen / hiOpen.
+struct ParamRange
 {
-    const bool ok = std::isfinite(value) && (loOpen ? value > lo : value >= lo) &&
-                    (hiOpen ? value < hi : value <= hi);
+    const char* name;
+    double lo;
+    bool loOpen;
+    double hi;
+    bool hiOpen;
+    const char* unit;
+};
+
+const ParamRange kLsdScale = { "lsdScale", 0, true, 1, false, "" };
+const ParamRange kLsdSigmaScale = { "lsdSigmaScale", 0, true, 100, false, "" };
+const ParamRange kLsdQuant = { "lsdQuant", 0, false, 255, false, "" };
+const ParamRange kLsdAngleTolerance = { "lsdAngleTolerance", 0, true, 180, true, " deg" };
+const ParamRange kLsdLogEps = { "lsdLogEps", -1000, false, 1000, false, "" };
+const ParamRange kLsdDensityThreshold = { "lsdDensityThreshold", 0, false, 1, true, "" };
+const ParamRange kLsdNumBins = { "lsdNumBins", 1, false, 65536, false, "" };
+const ParamRange kAngleBinWidth = { "angleBinWidth", 1, false, 90, false, " deg" };
+const ParamRange kEndpointDistance = { "endpointDistance", 0.1, false, 200, false, " px" };
+const ParamRange kBaselineRatio = { "baselineRatio", 0, true, 1, false, "" };
+const ParamRange kDirectionWeight = { "directionWeight", 0, false, 1, false, "" };
+const ParamRange kProximityWeight = { "proximityWeight", 0, false, 1, false, "" };
+const ParamRange kLengthWeight = { "lengthWeight", 0, false, 1, false, "" };
+const ParamRange kProximityRatio = { "proximityRatio", 0, true, 10, false, "" };
+const ParamRange kMergeThreshold = { "mergeThreshold", 0, false, 1, false, "" };
+const ParamRange kMaxPerpendicularOffset = { "maxPerpendicularOffset", 0, false, 100, false, " px" };
+
+// Validates value against its range (finite, inside the bounds) and stores it.
+template <typename T>
+void assign(T& field, T value, const ParamRange& r)
+{
+    const double v = (double)value;
+    const bool ok = std::isfinite(v) && (r.loOpen ? v > r.lo : v >= r.lo) &&
+                    (r.hiOpen ? v < r.hi : v <= r.hi);
     if (!ok)
         CV_Error_(Error::StsOutOfRange,
-                  ("LSDAdvance: %s must be a finite number in %c%g, %g%c%s%s, got %g", name,
-                   loOpen ? '(' : '[', lo, hi, hiOpen ? ')' : ']', *unit ? " " : "", unit, value));
+                  ("LSDAdvance: %s must be a finite number in %c%g, %g%c%s, got %g", r.name,
+                   r.loOpen ? '(' : '[', r.lo, r.hi, r.hiOpen ? ')' : ']', r.unit, v));
+    field = value;
 }
 
-void checkOneOf(const char* name, int value, int first, int last, const char* names)
+// Validates an enumerated value (first..last) and stores it.
+void assignEnum(int& field, int value, const char* name, int first, int last, const char* names)
 {
     if (value < first || value > last)
         CV_Error_(Error::StsOutOfRange,
                   ("LSDAdvance: %s must be one of %s (%d..%d), got %d", name, names, first, last, value));
+    field = value;
 }
 
 double elapsedMs(int64 since)
@@ -99,135 +131,63 @@ public:
 
     void setLsdRefine(int v) CV_OVERRIDE
     {
-        checkOneOf("lsdRefine", v, LSD_REFINE_NONE, LSD_REFINE_ADV,
+        assignEnum(lsd.refine, v, "lsdRefine", LSD_REFINE_NONE, LSD_REFINE_ADV,
                    "LSD_REFINE_NONE, LSD_REFINE_STD, LSD_REFINE_ADV");
-        lsd.refine = v;
         baseDetectorChanged();
     }
     int getLsdRefine() const CV_OVERRIDE { return lsd.refine; }
-    void setLsdScale(double v) CV_OVERRIDE
-    {
-        checkRange("lsdScale", v, 0, true, 1, false);
-        lsd.scale = v;
-        baseDetectorChanged();
-    }
+    void setLsdScale(double v) CV_OVERRIDE { assign(lsd.scale, v, kLsdScale); baseDetectorChanged(); }
     double getLsdScale() const CV_OVERRIDE { return lsd.scale; }
-    void setLsdSigmaScale(double v) CV_OVERRIDE
-    {
-        checkRange("lsdSigmaScale", v, 0, true, 100, false);
-        lsd.sigmaScale = v;
-        baseDetectorChanged();
-    }
+    void setLsdSigmaScale(double v) CV_OVERRIDE { assign(lsd.sigmaScale, v, kLsdSigmaScale); baseDetectorChanged(); }
     double getLsdSigmaScale() const CV_OVERRIDE { return lsd.sigmaScale; }
-    void setLsdQuant(double v) CV_OVERRIDE
-    {
-        checkRange("lsdQuant", v, 0, false, 255, false);
-        lsd.quant = v;
-        baseDetectorChanged();
-    }
+    void setLsdQuant(double v) CV_OVERRIDE { assign(lsd.quant, v, kLsdQuant); baseDetectorChanged(); }
     double getLsdQuant() const CV_OVERRIDE { return lsd.quant; }
-    void setLsdAngleTolerance(double v) CV_OVERRIDE
-    {
-        checkRange("lsdAngleTolerance", v, 0, true, 180, true, "deg");
-        lsd.angleTolerance = v;
-        baseDetectorChanged();
-    }
+    void setLsdAngleTolerance(double v) CV_OVERRIDE { assign(lsd.angleTolerance, v, kLsdAngleTolerance); baseDetectorChanged(); }
     double getLsdAngleTolerance() const CV_OVERRIDE { return lsd.angleTolerance; }
-    void setLsdLogEps(double v) CV_OVERRIDE
-    {
-        checkRange("lsdLogEps", v, -1000, false, 1000, false);
-        lsd.logEps = v;
-        baseDetectorChanged();
-    }
+    void setLsdLogEps(double v) CV_OVERRIDE { assign(lsd.logEps, v, kLsdLogEps); baseDetectorChanged(); }
     double getLsdLogEps() const CV_OVERRIDE { return lsd.logEps; }
-    void setLsdDensityThreshold(double v) CV_OVERRIDE
-    {
-        checkRange("lsdDensityThreshold", v, 0, false, 1, true);
-        lsd.densityThreshold = v;
-        baseDetectorChanged();
-    }
+    void setLsdDensityThreshold(double v) CV_OVERRIDE { assign(lsd.densityThreshold, v, kLsdDensityThreshold); baseDetectorChanged(); }
     double getLsdDensityThreshold() const CV_OVERRIDE { return lsd.densityThreshold; }
-    void setLsdNumBins(int v) CV_OVERRIDE
-    {
-        checkRange("lsdNumBins", v, 1, false, 65536, false);
-        lsd.numBins = v;
-        baseDetectorChanged();
-    }
+    void setLsdNumBins(int v) CV_OVERRIDE { assign(lsd.numBins, v, kLsdNumBins); baseDetectorChanged(); }
     int getLsdNumBins() const CV_OVERRIDE { return lsd.numBins; }
 
     void setLengthFilterMode(int v) CV_OVERRIDE
     {
-        checkOneOf("lengthFilterMode", v, LENGTH_FILTER_NONE, LENGTH_FILTER_INTERFRAME,
+        assignEnum(lengthFilterMode, v, "lengthFilterMode", LENGTH_FILTER_NONE, LENGTH_FILTER_INTERFRAME,
                    "LENGTH_FILTER_NONE, LENGTH_FILTER_ADAPTIVE, LENGTH_FILTER_INTERFRAME");
-        lengthFilterMode = v;
         reset();
     }
     int getLengthFilterMode() const CV_OVERRIDE { return lengthFilterMode; }
 
-    void setAngleBinWidth(double v) CV_OVERRIDE
-    {
-        checkRange("angleBinWidth", v, 1, false, 90, false, "deg");
-        grouping.angleBinWidth = v;
-    }
+    void setAngleBinWidth(double v) CV_OVERRIDE { assign(grouping.angleBinWidth, v, kAngleBinWidth); }
     double getAngleBinWidth() const CV_OVERRIDE { return grouping.angleBinWidth; }
     void setAngleBinning(int v) CV_OVERRIDE
     {
-        checkOneOf("angleBinning", v, ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS,
+        int binning;
+        assignEnum(binning, v, "angleBinning", ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS,
                    "ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS");
-        grouping.neighbourBins = v == ANGLE_BINS_NEIGHBOURS;
+        grouping.neighbourBins = binning == ANGLE_BINS_NEIGHBOURS;
     }
     int getAngleBinning() const CV_OVERRIDE
     {
         return grouping.neighbourBins ? ANGLE_BINS_NEIGHBOURS : ANGLE_BINS_STRICT;
     }
-    void setEndpointDistance(double v) CV_OVERRIDE
-    {
-        checkRange("endpointDistance", v, 0.1, false, 200, false, "px");
-        grouping.endpointDistance = v;
-    }
+    void setEndpointDistance(double v) CV_OVERRIDE { assign(grouping.endpointDistance, v, kEndpointDistance); }
     double getEndpointDistance() const CV_OVERRIDE { return grouping.endpointDistance; }
 
-    void setBaselineRatio(double v) CV_OVERRIDE
-    {
-        checkRange("baselineRatio", v, 0, true, 1, false);
-        merging.baselineRatio = v;
-    }
+    void setBaselineRatio(double v) CV_OVERRIDE { assign(merging.baselineRatio, v, kBaselineRatio); }
     double getBaselineRatio() const CV_OVERRIDE { return merging.baselineRatio; }
-    void setDirectionWeight(double v) CV_OVERRIDE
-    {
-        checkRange("directionWeight", v, 0, false, 1, false);
-        merging.directionWeight = v;
-    }
+    void setDirectionWeight(double v) CV_OVERRIDE { assign(merging.directionWeight, v, kDirectionWeight); }
     double getDirectionWeight() const CV_OVERRIDE { return merging.directionWeight; }
-    void setProximityWeight(double v) CV_OVERRIDE
-    {
-        checkRange("proximityWeight", v, 0, false, 1, false);
-        merging.proximityWeight = v;
-    }
+    void setProximityWeight(double v) CV_OVERRIDE { assign(merging.proximityWeight, v, kProximityWeight); }
     double getProximityWeight() const CV_OVERRIDE { return merging.proximityWeight; }
-    void setLengthWeight(double v) CV_OVERRIDE
-    {
-        checkRange("lengthWeight", v, 0, false, 1, false);
-        merging.lengthWeight = v;
-    }
+    void setLengthWeight(double v) CV_OVERRIDE { assign(merging.lengthWeight, v, kLengthWeight); }
     double getLengthWeight() const CV_OVERRIDE { return merging.lengthWeight; }
-    void setProximityRatio(double v) CV_OVERRIDE
-    {
-        checkRange("proximityRatio", v, 0, true, 10, false);
-        merging.proximityRatio = v;
-    }
+    void setProximityRatio(double v) CV_OVERRIDE { assign(merging.proximityRatio, v, kProximityRatio); }
     double getProximityRatio() const CV_OVERRIDE { return merging.proximityRatio; }
-    void setMergeThreshold(double v) CV_OVERRIDE
-    {
-        checkRange("mergeThreshold", v, 0, false, 1, false);
-        merging.mergeThreshold = v;
-    }
+    void setMergeThreshold(double v) CV_OVERRIDE { assign(merging.mergeThreshold, v, kMergeThreshold); }
     double getMergeThreshold() const CV_OVERRIDE { return merging.mergeThreshold; }
-    void setMaxPerpendicularOffset(double v) CV_OVERRIDE
-    {
-        checkRange("maxPerpendicularOffset", v, 0, false, 100, false, "px");
-        merging.maxPerpendicularOffset = v;
-    }
+    void setMaxPerpendicularOffset(double v) CV_OVERRIDE { assign(merging.maxPerpendicularOffset, v, kMaxPerpendicularOffset); }
     double getMaxPerpendicularOffset() const CV_OVERRIDE { return merging.maxPerpendicularOffset; }
 
     void write(FileStorage& fs) const CV_OVERRIDE

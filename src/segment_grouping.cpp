@@ -58,27 +58,24 @@ struct DisjointSets
     }
 };
 
-// Endpoints bucketed in square cells of the adjacency distance: two endpoints closer than
-// the distance are in the same or in neighbouring cells, so each endpoint is compared only
-// with the endpoints of 9 cells, not with all of them.
-struct EndpointGrid
+// An endpoint filed under its grid cell. Cells are squares of the adjacency distance, so two
+// endpoints closer than it are in the same or in neighbouring cells: each endpoint is compared
+// with the endpoints of 9 cells only, never with all of them.
+struct CellEntry
 {
-    struct Entry
-    {
-        int64 cell;
-        int endpoint;  // 2 * segment + (0 for start, 1 for end)
-        bool operator<(const Entry& o) const
-        {
-            return cell < o.cell || (cell == o.cell && endpoint < o.endpoint);
-        }
-    };
-    std::vector<Entry> entries;
+    int64 cell;
+    int endpoint;  // 2 * segment + (0 for the start, 1 for the end)
 
-    static int64 cellKey(int cx, int cy)
+    bool operator<(const CellEntry& o) const
     {
-        return ((int64)cx << 32) | (int64)(uint32_t)cy;
+        return cell < o.cell || (cell == o.cell && endpoint < o.endpoint);
     }
 };
+
+int64 cellKey(const Point& cell)
+{
+    return ((int64)cell.x << 32) | (int64)(uint32_t)cell.y;
+}
 
 } // namespace
 
@@ -113,14 +110,10 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         return Point(cvFloor(p.x / cellSize), cvFloor(p.y / cellSize));
     };
 
-    EndpointGrid grid;
-    grid.entries.resize(2 * (size_t)n);
+    std::vector<CellEntry> grid(2 * (size_t)n);
     for (int e = 0; e < 2 * n; e++)
-    {
-        const Point c = cellOf(endpoint(e));
-        grid.entries[e] = { EndpointGrid::cellKey(c.x, c.y), e };
-    }
-    std::sort(grid.entries.begin(), grid.entries.end());
+        grid[e] = { cellKey(cellOf(endpoint(e))), e };
+    std::sort(grid.begin(), grid.end());
 
     DisjointSets sets(n);
     for (int e = 0; e < 2 * n; e++)
@@ -131,9 +124,9 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         for (int dy = -1; dy <= 1; dy++)
             for (int dx = -1; dx <= 1; dx++)
             {
-                const EndpointGrid::Entry lo = { EndpointGrid::cellKey(c.x + dx, c.y + dy), 0 };
-                for (auto it = std::lower_bound(grid.entries.begin(), grid.entries.end(), lo);
-                     it != grid.entries.end() && it->cell == lo.cell; ++it)
+                const CellEntry first = { cellKey(c + Point(dx, dy)), 0 };
+                for (auto it = std::lower_bound(grid.begin(), grid.end(), first);
+                     it != grid.end() && it->cell == first.cell; ++it)
                 {
                     const int other = it->endpoint >> 1;
                     if (other <= seg || !binsPair(bin[seg], bin[other], bins, params.neighbourBins))
