@@ -29,7 +29,7 @@ double interFrameAlpha(int keptPrevious, int keptBeforePrevious)
     return std::min(1.0 + 0.1 * (r - 0.1), 1.2);
 }
 
-double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha)
+double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, LengthThreshold rule)
 {
     if (segments.empty())
         return 0.0;
@@ -45,6 +45,8 @@ double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha)
     if (mean <= 0.0)
         return 0.0;
     const double stddev = std::sqrt(std::max(sumSq / n - mean * mean, 0.0));
+    if (rule == LengthThreshold::CAPPED)
+        return std::min(mean, stddev) * alpha;
     return std::max((1.0 - std::abs(mean - stddev) / mean) * mean * alpha, 0.0);
 }
 

@@ -75,50 +75,30 @@ public:
     void detect(InputArray image, OutputArray lines) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        LSDAdvanceStats stats;
-
-        int64 t = getTickCount();
+        const int64 start = getTickCount();
         const Mat gray = lsda::toGray8U(image);
         if (!baseLsd)
             baseLsd = lsda::createBaseLsd(lsd);
         std::vector<Vec4f> base;
         baseLsd->detect(gray, base);
-        stats.baseSegments = (int)base.size();
-        stats.baseMs = elapsedMs(t);
+        runStages(base, elapsedMs(start), lines);
+    }
 
-        t = getTickCount();
-        std::vector<Vec4f> kept;
-        if (lengthFilterMode == LENGTH_FILTER_NONE)
-            kept.swap(base);
-        else
+    void processSegments(InputArray segments, OutputArray lines) CV_OVERRIDE
+    {
+        CV_INSTRUMENT_REGION();
+        std::vector<Vec4f> base;
+        if (!segments.empty())
         {
-            stats.alpha = lengthFilterMode == LENGTH_FILTER_INTERFRAME && framesSeen >= 2
-                              ? lsda::interFrameAlpha(keptCounts[0], keptCounts[1])
-                              : 1.0;
-            stats.minLength = lsda::adaptiveMinLength(base, stats.alpha);
-            lsda::dropShortSegments(base, stats.minLength, kept);
+            const Mat m = segments.getMat();
+            if (m.type() != CV_32FC4 || (m.rows != 1 && m.cols != 1))
+                CV_Error_(Error::StsBadArg,
+                          ("LSDAdvance::processSegments: expected N x 1 or 1 x N CV_32FC4 segments "
+                           "(std::vector<Vec4f>), got %s %dx%d",
+                           typeToString(m.type()).c_str(), m.cols, m.rows));
+            m.reshape(4, (int)m.total()).copyTo(base);
         }
-        stats.filteredSegments = (int)kept.size();
-        keptCounts[1] = keptCounts[0];
-        keptCounts[0] = stats.filteredSegments;
-        framesSeen = std::min(framesSeen + 1, 2);
-        stats.filterMs = elapsedMs(t);
-
-        t = getTickCount();
-        lsda::SegmentGroups groups;
-        lsda::groupSegments(kept, grouping, groups);
-        for (int g = 0; g < groups.count(); g++)
-            stats.mergeGroups += groups.offsets[g + 1] - groups.offsets[g] > 1;
-        stats.groupingMs = elapsedMs(t);
-
-        t = getTickCount();
-        std::vector<Vec4f> merged;
-        lsda::mergeGroups(kept, groups, merging, merged);
-        stats.outputSegments = (int)merged.size();
-        stats.mergingMs = elapsedMs(t);
-
-        Mat(merged).copyTo(lines);
-        lastStats = stats;
+        runStages(base, 0.0, lines);
     }
 
     void reset() CV_OVERRIDE
@@ -158,6 +138,32 @@ public:
         reset();
     }
     int getLengthFilterMode() const CV_OVERRIDE { return lengthFilterMode; }
+
+    void setLengthThreshold(int v) CV_OVERRIDE
+    {
+        int rule;
+        assignEnum(rule, v, "lengthThreshold", LENGTH_THRESHOLD_PAPER, LENGTH_THRESHOLD_CAPPED,
+                   "LENGTH_THRESHOLD_PAPER, LENGTH_THRESHOLD_CAPPED");
+        lengthThreshold = (lsda::LengthThreshold)rule;
+        reset();
+    }
+    int getLengthThreshold() const CV_OVERRIDE { return (int)lengthThreshold; }
+
+    void setMergeStrategy(int v) CV_OVERRIDE
+    {
+        int strategy;
+        assignEnum(strategy, v, "mergeStrategy", MERGE_NONE, MERGE_LONGEST_FIRST,
+                   "MERGE_NONE, MERGE_BASELINES, MERGE_LONGEST_FIRST");
+        merging.strategy = (lsda::MergeStrategy)strategy;
+    }
+    int getMergeStrategy() const CV_OVERRIDE { return (int)merging.strategy; }
+    void setStageOrder(int v) CV_OVERRIDE
+    {
+        assignEnum(stageOrder, v, "stageOrder", FILTER_THEN_MERGE, MERGE_THEN_FILTER,
+                   "FILTER_THEN_MERGE, MERGE_THEN_FILTER");
+        reset();
+    }
+    int getStageOrder() const CV_OVERRIDE { return stageOrder; }
 
     void setAngleBinWidth(double v) CV_OVERRIDE { assign(grouping.angleBinWidth, v, kAngleBinWidth); }
     double getAngleBinWidth() const CV_OVERRIDE { return grouping.angleBinWidth; }
@@ -239,6 +245,77 @@ private:
     };
 
     // The persisted parameters: one table drives write() and read().
+    // Stages 1-3 in the configured order on the base segments; fills lastStats.
+    void runStages(std::vector<Vec4f>& base, double baseMs, OutputArray lines)
+    {
+        LSDAdvanceStats stats;
+        stats.baseSegments = (int)base.size();
+        stats.baseMs = baseMs;
+
+        // The threshold always comes from the base segments: after merging, the lengths are
+        // no longer those of one detector's output.
+        int64 t = getTickCount();
+        if (lengthFilterMode != LENGTH_FILTER_NONE)
+        {
+            stats.alpha = lengthFilterMode == LENGTH_FILTER_INTERFRAME && framesSeen >= 2
+                              ? lsda::interFrameAlpha(keptCounts[0], keptCounts[1])
+                              : 1.0;
+            stats.minLength = lsda::adaptiveMinLength(base, stats.alpha, lengthThreshold);
+        }
+        stats.filterMs = elapsedMs(t);
+
+        std::vector<Vec4f> work, out;
+        if (stageOrder == FILTER_THEN_MERGE)
+        {
+            filterStage(base, stats, work);
+            mergeStage(work, stats, out);
+        }
+        else
+        {
+            mergeStage(base, stats, work);
+            filterStage(work, stats, out);
+        }
+        keptCounts[1] = keptCounts[0];
+        keptCounts[0] = stats.filteredSegments;
+        framesSeen = std::min(framesSeen + 1, 2);
+
+        stats.outputSegments = (int)out.size();
+        Mat(out).copyTo(lines);
+        lastStats = stats;
+    }
+
+    void filterStage(std::vector<Vec4f>& in, LSDAdvanceStats& stats, std::vector<Vec4f>& kept) const
+    {
+        const int64 t = getTickCount();
+        if (lengthFilterMode == LENGTH_FILTER_NONE)
+            kept.swap(in);
+        else
+            lsda::dropShortSegments(in, stats.minLength, kept);
+        stats.filteredSegments = (int)kept.size();
+        stats.filterMs += elapsedMs(t);
+    }
+
+    void mergeStage(std::vector<Vec4f>& in, LSDAdvanceStats& stats, std::vector<Vec4f>& merged) const
+    {
+        if (merging.strategy == lsda::MergeStrategy::NONE)
+        {
+            merged.swap(in);
+            stats.mergedSegments = (int)merged.size();
+            return;
+        }
+        int64 t = getTickCount();
+        lsda::SegmentGroups groups;
+        lsda::groupSegments(in, grouping, groups);
+        for (int g = 0; g < groups.count(); g++)
+            stats.mergeGroups += groups.offsets[g + 1] - groups.offsets[g] > 1;
+        stats.groupingMs = elapsedMs(t);
+
+        t = getTickCount();
+        lsda::mergeGroups(in, groups, merging, merged);
+        stats.mergedSegments = (int)merged.size();
+        stats.mergingMs = elapsedMs(t);
+    }
+
     static const std::vector<IntParam>& intParams()
     {
         static const std::vector<IntParam> params = {
@@ -246,6 +323,9 @@ private:
             { "lsdNumBins", &LSDAdvanceImpl::getLsdNumBins, &LSDAdvanceImpl::setLsdNumBins },
             { "lengthFilterMode", &LSDAdvanceImpl::getLengthFilterMode, &LSDAdvanceImpl::setLengthFilterMode },
             { "angleBinning", &LSDAdvanceImpl::getAngleBinning, &LSDAdvanceImpl::setAngleBinning },
+            { "lengthThreshold", &LSDAdvanceImpl::getLengthThreshold, &LSDAdvanceImpl::setLengthThreshold },
+            { "mergeStrategy", &LSDAdvanceImpl::getMergeStrategy, &LSDAdvanceImpl::setMergeStrategy },
+            { "stageOrder", &LSDAdvanceImpl::getStageOrder, &LSDAdvanceImpl::setStageOrder },
         };
         return params;
     }
@@ -279,6 +359,8 @@ private:
 
     lsda::LsdParams lsd;
     int lengthFilterMode = LENGTH_FILTER_INTERFRAME;
+    int stageOrder = MERGE_THEN_FILTER;
+    lsda::LengthThreshold lengthThreshold = lsda::LengthThreshold::CAPPED;
     lsda::GroupingParams grouping;
     lsda::MergeParams merging;
 

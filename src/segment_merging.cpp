@@ -46,28 +46,33 @@ struct Candidate
     int baseline;  // index into the group's members
 };
 
-// Best baseline for one segment against the current baselines; score -1 when none passes
+// Whether seg may fuse into base: inside the perpendicular gate and scoring at least the
+// threshold (the score is returned).
+bool passes(const Vec4f& base, const Vec4f& seg, const MergeParams& params, double& score)
+{
+    if (perpendicularOffset(base, seg) > params.maxPerpendicularOffset)
+        return false;
+    score = similarityScore(similarityTerms(base, seg, params.proximityRatio), params);
+    return score >= params.mergeThreshold;
+}
+
+// Best baseline for one segment against the current baselines; baseline -1 when none passes
 // the perpendicular gate and the threshold.
 Candidate bestBaseline(int segment, const std::vector<Vec4f>& geometry,
                        const std::vector<int>& baselines, const MergeParams& params)
 {
     Candidate best = { -1.0, segment, -1 };
+    double score;
     for (int b : baselines)
-    {
-        if (perpendicularOffset(geometry[b], geometry[segment]) > params.maxPerpendicularOffset)
-            continue;
-        const double score = similarityScore(
-            similarityTerms(geometry[b], geometry[segment], params.proximityRatio), params);
-        if (score >= params.mergeThreshold && score > best.score)
+        if (passes(geometry[b], geometry[segment], params, score) && score > best.score)
             best = { score, segment, b };
-    }
     return best;
 }
 
-// Merges one group in place: geometry holds the members' segments, consumed marks the
-// segments fused into a baseline.
-void mergeGroup(std::vector<Vec4f>& geometry, std::vector<char>& consumed,
-                const MergeParams& params)
+// The paper's rule, in place: geometry holds the group's segments, consumed marks those fused
+// into a baseline.
+void mergeIntoBaselines(std::vector<Vec4f>& geometry, std::vector<char>& consumed,
+                        const MergeParams& params)
 {
     const int n = (int)geometry.size();
     double maxLength = 0;
@@ -99,15 +104,12 @@ void mergeGroup(std::vector<Vec4f>& geometry, std::vector<char>& consumed,
             return a.score > b.score || (a.score == b.score && a.segment < b.segment);
         });
         bool fused = false;
+        double score;
         for (const Candidate& c : candidates)
         {
-            const Vec4f& base = geometry[c.baseline];
-            const Vec4f& seg = geometry[c.segment];
-            if (perpendicularOffset(base, seg) > params.maxPerpendicularOffset ||
-                similarityScore(similarityTerms(base, seg, params.proximityRatio), params) <
-                    params.mergeThreshold)
+            if (!passes(geometry[c.baseline], geometry[c.segment], params, score))
                 continue;
-            geometry[c.baseline] = fuseSegments(base, seg);
+            geometry[c.baseline] = fuseSegments(geometry[c.baseline], geometry[c.segment]);
             consumed[c.segment] = 1;
             fused = true;
         }
@@ -116,6 +118,47 @@ void mergeGroup(std::vector<Vec4f>& geometry, std::vector<char>& consumed,
         pending.erase(std::remove_if(pending.begin(), pending.end(),
                                      [&](int s) { return consumed[s] != 0; }),
                       pending.end());
+    }
+}
+
+// Every segment, from the longest down, absorbs the best-scoring shorter segment of its group
+// again and again until none passes; equal lengths go by index. Unlike the paper's rule, two
+// long collinear pieces of one edge can join.
+void mergeLongestFirst(std::vector<Vec4f>& geometry, std::vector<char>& consumed,
+                       const MergeParams& params)
+{
+    const int n = (int)geometry.size();
+    std::vector<double> length(n);
+    std::vector<int> order(n);
+    for (int i = 0; i < n; i++)
+    {
+        length[i] = segmentLength(geometry[i]);
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return length[a] > length[b]; });
+    for (int k = 0; k < n; k++)
+    {
+        const int base = order[k];
+        if (consumed[base])
+            continue;
+        for (;;)
+        {
+            int best = -1;
+            double bestScore = -1, score;
+            for (int j = k + 1; j < n; j++)
+            {
+                const int seg = order[j];
+                if (!consumed[seg] && passes(geometry[base], geometry[seg], params, score) && score > bestScore)
+                {
+                    best = seg;
+                    bestScore = score;
+                }
+            }
+            if (best < 0)
+                break;
+            geometry[base] = fuseSegments(geometry[base], geometry[best]);
+            consumed[best] = 1;
+        }
     }
 }
 
@@ -195,8 +238,10 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
         for (int k = begin; k < end; k++)
             geometry.push_back(segments[groups.members[k]]);
         consumed.assign(geometry.size(), 0);
-        if (geometry.size() > 1)
-            mergeGroup(geometry, consumed, params);
+        if (geometry.size() > 1 && params.strategy == MergeStrategy::BASELINES)
+            mergeIntoBaselines(geometry, consumed, params);
+        else if (geometry.size() > 1 && params.strategy == MergeStrategy::LONGEST_FIRST)
+            mergeLongestFirst(geometry, consumed, params);
         for (size_t k = 0; k < geometry.size(); k++)
             if (!consumed[k])
                 merged.push_back(geometry[k]);

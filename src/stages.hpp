@@ -18,11 +18,12 @@ namespace lsda {
 
 //--- stage 0: base detection (base_detector.cpp)
 
-//! Parameters of cv::createLineSegmentDetector, in its argument order.
+//! Parameters of cv::createLineSegmentDetector, in its argument order. refine and scale
+//! differ from LSD's defaults: chosen by measurement (doc/parameter_sweep.md).
 struct LsdParams
 {
-    int refine = LSD_REFINE_STD;
-    double scale = 0.8;
+    int refine = LSD_REFINE_NONE;
+    double scale = 1.0;
     double sigmaScale = 0.6;
     double quant = 2.0;
     double angleTolerance = 22.5;
@@ -43,8 +44,15 @@ CV_EXPORTS double segmentLength(const Vec4f& segment);
 //! The paper's inter-frame factor from the kept counts of frames k-1 and k-2.
 CV_EXPORTS double interFrameAlpha(int keptPrevious, int keptBeforePrevious);
 
-//! (1 - |mean - std| / mean) * mean * alpha of the lengths, clamped at 0; 0 for no segments.
-CV_EXPORTS double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha);
+enum class LengthThreshold
+{
+    PAPER,   //!< (1 - |mean - std| / mean) * mean * alpha, clamped at 0
+    CAPPED   //!< min(mean, std) * alpha: the paper's value while std <= mean, then mean
+};
+
+//! Length threshold of the segments' lengths (mean, population std); 0 for no segments.
+CV_EXPORTS double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha,
+                                    LengthThreshold rule = LengthThreshold::PAPER);
 
 //! Copies the segments not shorter than minLength, in their order.
 CV_EXPORTS void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
@@ -77,13 +85,21 @@ CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const Grouping
 
 //--- stage 3: similarity-ordered merging (segment_merging.cpp)
 
+enum class MergeStrategy
+{
+    NONE,           //!< no fusion
+    BASELINES,      //!< the paper: only segments shorter than baselineRatio x the longest fuse, into the longer ones
+    LONGEST_FIRST   //!< every segment, longest first, absorbs the shorter ones that pass
+};
+
 struct MergeParams
 {
+    MergeStrategy strategy = MergeStrategy::LONGEST_FIRST;
     double baselineRatio = 0.8;
     double directionWeight = 0.4;
     double proximityWeight = 0.35;
     double lengthWeight = 0.2;
-    double proximityRatio = 0.1;
+    double proximityRatio = 1.0;
     double mergeThreshold = 0.6;
     double maxPerpendicularOffset = 1.5;  //!< pixels
 };

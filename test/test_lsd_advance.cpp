@@ -39,10 +39,23 @@ std::vector<Vec4f> detectLines(const Ptr<LSDAdvance>& detector, const Mat& image
     return lines;
 }
 
+// OpenCV's LSD with its defaults: the detector LSDAdvance is compared with.
 std::vector<Vec4f> detectLsd(const Mat& image)
 {
     std::vector<Vec4f> lines;
     createLineSegmentDetector()->detect(image, lines);
+    return lines;
+}
+
+// OpenCV's LSD with the parameters of a default LSDAdvance: its stage 0.
+std::vector<Vec4f> detectBase(const Mat& image)
+{
+    const Ptr<LSDAdvance> d = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    createLineSegmentDetector(d->getLsdRefine(), d->getLsdScale(), d->getLsdSigmaScale(), d->getLsdQuant(),
+                              d->getLsdAngleTolerance(), d->getLsdLogEps(), d->getLsdDensityThreshold(),
+                              d->getLsdNumBins())
+        ->detect(image, lines);
     return lines;
 }
 
@@ -108,14 +121,14 @@ TEST(LSDAdvance_Detect, output_is_Nx1_CV_32FC4)
 
 TEST(LSDAdvance_Detect, broken_long_edge_comes_out_as_one_segment)
 {
-    // LSD returns the broken edge in three collinear pieces (278, 117 and 155 px).
+    // The base detector returns the broken edge in three collinear pieces (about 278, 117 and 155 px).
     const Mat broken = brokenEdgeImage({ 300, 420 });
-    ASSERT_EQ(3u, onTopEdge(detectLsd(broken)).size());
+    ASSERT_EQ(3u, onTopEdge(detectBase(broken)).size());
 
     const std::vector<Vec4f> edge = onTopEdge(detectLines(createLSDAdvance(), broken));
     ASSERT_EQ(1u, edge.size());
-    // The reference is LSD's segment on the same edge without the breaks.
-    const std::vector<Vec4f> whole = onTopEdge(detectLsd(brokenEdgeImage({})));
+    // The reference is the base detector's segment on the same edge without the breaks.
+    const std::vector<Vec4f> whole = onTopEdge(detectBase(brokenEdgeImage({})));
     ASSERT_EQ(1u, whole.size());
     for (int i = 0; i < 4; i++)
         EXPECT_NEAR(whole[0][i], edge[0][i], 1.0) << "coordinate " << i;
@@ -131,15 +144,18 @@ TEST(LSDAdvance_Detect, segments_keep_LSD_orientation_bright_side_on_the_left)
     const std::vector<Vec4f> edge = onTopEdge(detectLines(createLSDAdvance(), brokenEdgeImage({ 300, 420 })));
     ASSERT_EQ(1u, edge.size());
     EXPECT_GT(edge[0][0], edge[0][2]);
-    const std::vector<Vec4f> lsdPieces = onTopEdge(detectLsd(brokenEdgeImage({ 300, 420 })));
-    for (const Vec4f& piece : lsdPieces)
+    const std::vector<Vec4f> basePieces = onTopEdge(detectBase(brokenEdgeImage({ 300, 420 })));
+    for (const Vec4f& piece : basePieces)
         EXPECT_GT(piece[0], piece[2]);
 }
 
 TEST(LSDAdvance_Detect, short_clutter_is_removed_and_long_edges_stay)
 {
+    // On OpenCV's default LSD as the base, which sees the 12 px strokes.
     const Mat img = clutterImage(42);
     Ptr<LSDAdvance> detector = createLSDAdvance();
+    detector->setLsdRefine(LSD_REFINE_STD);
+    detector->setLsdScale(0.8);
     const std::vector<Vec4f> lines = detectLines(detector, img);
     const LSDAdvanceStats stats = detector->getLastStats();
     const std::vector<Vec4f> base = detectLsd(img);
@@ -159,35 +175,98 @@ TEST(LSDAdvance_Detect, short_clutter_is_removed_and_long_edges_stay)
     EXPECT_GE(longOnes(lines), 20);
 }
 
-TEST(LSDAdvance_Detect, stats_report_every_stage)
+TEST(LSDAdvance_Detect, stats_report_every_stage_in_the_paper_order)
 {
     const Mat img = clutterImage(7);
     Ptr<LSDAdvance> detector = createLSDAdvance();
+    detector->setStageOrder(LSDAdvance::FILTER_THEN_MERGE);
     const std::vector<Vec4f> lines = detectLines(detector, img);
     const LSDAdvanceStats stats = detector->getLastStats();
-    const std::vector<Vec4f> base = detectLsd(img);
+    const std::vector<Vec4f> base = detectBase(img);
     EXPECT_EQ((int)base.size(), stats.baseSegments);
-    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0), stats.minLength, 1e-9);
+    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, lsda::LengthThreshold::CAPPED), stats.minLength, 1e-9);
     EXPECT_EQ(1.0, stats.alpha);
     std::vector<Vec4f> kept;
     lsda::dropShortSegments(base, stats.minLength, kept);
     EXPECT_EQ((int)kept.size(), stats.filteredSegments);
+    EXPECT_EQ((int)lines.size(), stats.mergedSegments);
     EXPECT_EQ((int)lines.size(), stats.outputSegments);
-    EXPECT_LE(stats.outputSegments, stats.filteredSegments);
+    EXPECT_LT(stats.mergedSegments, stats.filteredSegments);
+    EXPECT_GT(stats.mergeGroups, 0);
     EXPECT_GE(stats.baseMs, 0.0);
     EXPECT_GE(stats.filterMs, 0.0);
     EXPECT_GE(stats.groupingMs, 0.0);
     EXPECT_GE(stats.mergingMs, 0.0);
 }
 
-TEST(LSDAdvance_Detect, length_filter_none_keeps_every_base_segment)
+TEST(LSDAdvance_Detect, stats_report_every_stage_when_merging_first)
+{
+    const Mat img = clutterImage(7);
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    ASSERT_EQ(LSDAdvance::MERGE_THEN_FILTER, detector->getStageOrder());
+    const std::vector<Vec4f> lines = detectLines(detector, img);
+    const LSDAdvanceStats stats = detector->getLastStats();
+    const std::vector<Vec4f> base = detectBase(img);
+    EXPECT_EQ((int)base.size(), stats.baseSegments);
+    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, lsda::LengthThreshold::CAPPED), stats.minLength, 1e-9);
+    EXPECT_LT(stats.mergedSegments, stats.baseSegments);
+    EXPECT_LT(stats.filteredSegments, stats.mergedSegments);
+    EXPECT_EQ((int)lines.size(), stats.filteredSegments);
+    EXPECT_EQ((int)lines.size(), stats.outputSegments);
+}
+
+TEST(LSDAdvance_Detect, merging_first_keeps_pieces_the_filter_would_drop)
+{
+    // The 55 px piece between notches 400 and 460 is shorter than the length threshold: the
+    // paper's order drops it before it can join, and the edge stays broken.
+    const Mat broken = brokenEdgeImage({ 300, 400, 460 });
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    const std::vector<Vec4f> mergedFirst = onTopEdge(detectLines(detector, broken));
+    ASSERT_EQ(1u, mergedFirst.size());
+    EXPECT_NEAR(560.0, lsda::segmentLength(mergedFirst[0]), 3.0);
+    detector->setStageOrder(LSDAdvance::FILTER_THEN_MERGE);
+    const std::vector<Vec4f> filteredFirst = onTopEdge(detectLines(detector, broken));
+    EXPECT_GT(filteredFirst.size(), 1u);
+}
+
+TEST(LSDAdvance_Detect, merge_none_returns_the_filtered_base_segments)
+{
+    const Mat img = clutterImage(9);
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    detector->setMergeStrategy(LSDAdvance::MERGE_NONE);
+    const std::vector<Vec4f> lines = detectLines(detector, img);
+    std::vector<Vec4f> kept;
+    lsda::dropShortSegments(detectBase(img), detector->getLastStats().minLength, kept);
+    EXPECT_EQ(kept, lines);
+    EXPECT_EQ(0, detector->getLastStats().mergeGroups);
+}
+
+TEST(LSDAdvance_Detect, processSegments_runs_the_stages_on_given_segments)
+{
+    const Mat img = buildingImage();
+    const std::vector<Vec4f> base = detectBase(img);
+    Ptr<LSDAdvance> fromImage = createLSDAdvance(), fromSegments = createLSDAdvance();
+    std::vector<Vec4f> expected = detectLines(fromImage, img), lines;
+    fromSegments->processSegments(base, lines);
+    EXPECT_EQ(expected, lines);
+    EXPECT_EQ((int)base.size(), fromSegments->getLastStats().baseSegments);
+    fromSegments->processSegments(std::vector<Vec4f>(), lines);
+    EXPECT_TRUE(lines.empty());
+    EXPECT_THROW(fromSegments->processSegments(Mat(3, 4, CV_32FC1), lines), cv::Exception);
+}
+
+TEST(LSDAdvance_Detect, length_filter_none_keeps_every_segment)
 {
     const Mat img = clutterImage(3);
     Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
     detectLines(detector, img);
-    const LSDAdvanceStats stats = detector->getLastStats();
-    EXPECT_EQ(stats.baseSegments, stats.filteredSegments);
+    LSDAdvanceStats stats = detector->getLastStats();
+    EXPECT_EQ(stats.mergedSegments, stats.filteredSegments);
     EXPECT_EQ(0.0, stats.minLength);
+    detector->setStageOrder(LSDAdvance::FILTER_THEN_MERGE);
+    detectLines(detector, img);
+    stats = detector->getLastStats();
+    EXPECT_EQ(stats.baseSegments, stats.filteredSegments);
 }
 
 TEST(LSDAdvance_Detect, color_input_equals_its_gray_conversion)
@@ -211,7 +290,7 @@ TEST(LSDAdvance_Detect, roi_view_is_read_like_LSD_reads_it)
     ASSERT_FALSE(roi.isContinuous());
     Ptr<LSDAdvance> detector = createLSDAdvance();
     const std::vector<Vec4f> lines = detectLines(detector, roi);
-    const std::vector<Vec4f> base = detectLsd(roi);
+    const std::vector<Vec4f> base = detectBase(roi);
     EXPECT_EQ((int)base.size(), detector->getLastStats().baseSegments);
     ASSERT_FALSE(lines.empty());
     Vec4f lo(FLT_MAX, FLT_MAX, FLT_MAX, FLT_MAX), hi(-FLT_MAX, -FLT_MAX, -FLT_MAX, -FLT_MAX);

@@ -19,6 +19,23 @@ std::vector<Vec4f> groupAndMerge(const std::vector<Vec4f>& segments, const lsda:
     return merged;
 }
 
+// The scores worked out in these tests use the paper's proximity ratio, 0.1.
+lsda::MergeParams paperParams()
+{
+    lsda::MergeParams p;
+    p.strategy = lsda::MergeStrategy::BASELINES;
+    p.proximityRatio = 0.1;
+    return p;
+}
+
+lsda::MergeParams longestFirstParams()
+{
+    lsda::MergeParams p;
+    p.strategy = lsda::MergeStrategy::LONGEST_FIRST;
+    p.proximityRatio = 0.1;
+    return p;
+}
+
 void expectSegmentNear(const Vec4f& expected, const Vec4f& actual, double tolerance)
 {
     for (int i = 0; i < 4; i++)
@@ -116,7 +133,7 @@ TEST(LSDAdvance_Fusion, direction_is_the_length_weighted_mean_across_the_0_180_w
     EXPECT_LT(fused[2], fused[0]);  // still points like the baseline (-x)
 }
 
-TEST(LSDAdvance_Merging, long_edge_broken_into_collinear_pieces_becomes_one_segment)
+TEST(LSDAdvance_MergingBaselines, long_edge_broken_into_collinear_pieces_becomes_one_segment)
 {
     // Pieces of a line y = 20 + 0.1 x with 3 px gaps; only the longest is a baseline, the
     // others join it one after the other.
@@ -126,25 +143,25 @@ TEST(LSDAdvance_Merging, long_edge_broken_into_collinear_pieces_becomes_one_segm
     const double starts[] = { 0, 203, 300, 357 }, lengths[] = { 200, 94, 54, 117 };
     for (int i = 0; i < 4; i++)
         segments.push_back(segmentAt(starts[i] * step, 20 + 0.1 * starts[i] * step, angle, lengths[i]));
-    const std::vector<Vec4f> merged = groupAndMerge(segments, lsda::MergeParams());
+    const std::vector<Vec4f> merged = groupAndMerge(segments, paperParams());
     ASSERT_EQ(1u, merged.size());
     const Vec4f truth(segments[0][0], segments[0][1], segments[3][2], segments[3][3]);
     expectSegmentNear(truth, merged[0], 1.0);
 }
 
-TEST(LSDAdvance_Merging, pieces_straddling_a_bin_edge_merge_with_neighbour_bins)
+TEST(LSDAdvance_MergingBaselines, pieces_straddling_a_bin_edge_merge_with_neighbour_bins)
 {
     const Vec4f base = segmentAt(0, 0, 9.95, 150);
     const Vec4f piece = segmentAt(base[2] + 2 * std::cos(0.1745), base[3] + 2 * std::sin(0.1745), 10.05, 60);
-    EXPECT_EQ(1u, groupAndMerge({ base, piece }, lsda::MergeParams(), true).size());
-    EXPECT_EQ(2u, groupAndMerge({ base, piece }, lsda::MergeParams(), false).size());
+    EXPECT_EQ(1u, groupAndMerge({ base, piece }, paperParams(), true).size());
+    EXPECT_EQ(2u, groupAndMerge({ base, piece }, paperParams(), false).size());
 }
 
-TEST(LSDAdvance_Merging, parallel_edges_2px_apart_stay_two)
+TEST(LSDAdvance_MergingBaselines, parallel_edges_2px_apart_stay_two)
 {
     // Same polarity, overlapping, 2 px apart: close enough to score, stopped by the gate.
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 200, 0), Vec4f(195, 2, 265, 2) };
-    lsda::MergeParams params;
+    lsda::MergeParams params = paperParams();
     ASSERT_GE(lsda::similarityScore(lsda::similarityTerms(segments[0], segments[1], params.proximityRatio), params),
               params.mergeThreshold);
     EXPECT_EQ(2u, groupAndMerge(segments, params).size());
@@ -152,34 +169,34 @@ TEST(LSDAdvance_Merging, parallel_edges_2px_apart_stay_two)
     EXPECT_EQ(1u, groupAndMerge(segments, params).size());
 }
 
-TEST(LSDAdvance_Merging, baselines_never_merge_with_each_other)
+TEST(LSDAdvance_MergingBaselines, baselines_never_merge_with_each_other)
 {
     // Two collinear pieces of equal length, 2 px apart: both are baselines.
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 202, 0) };
-    EXPECT_EQ(2u, groupAndMerge(segments, lsda::MergeParams()).size());
+    EXPECT_EQ(2u, groupAndMerge(segments, paperParams()).size());
     // With a piece of 85 px (>= 0.8 * 100) the same holds; with baselineRatio 0.9 it fuses.
     const std::vector<Vec4f> shorter = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 187, 0) };
-    lsda::MergeParams params;
+    lsda::MergeParams params = paperParams();
     EXPECT_EQ(2u, groupAndMerge(shorter, params).size());
     params.baselineRatio = 0.9;
     EXPECT_EQ(1u, groupAndMerge(shorter, params).size());
 }
 
-TEST(LSDAdvance_Merging, merge_threshold_controls_fusion)
+TEST(LSDAdvance_MergingBaselines, merge_threshold_controls_fusion)
 {
     // Score of the piece: 0.4 * 1 + 0.35 * (1 - 3 / 7.5) + 0.2 * 0.5 = 0.71.
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
-    lsda::MergeParams params;
+    lsda::MergeParams params = paperParams();
     params.mergeThreshold = 0.70;
     EXPECT_EQ(1u, groupAndMerge(segments, params).size());
     params.mergeThreshold = 0.72;
     EXPECT_EQ(2u, groupAndMerge(segments, params).size());
 }
 
-TEST(LSDAdvance_Merging, weights_and_proximity_ratio_change_the_outcome)
+TEST(LSDAdvance_MergingBaselines, weights_and_proximity_ratio_change_the_outcome)
 {
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
-    lsda::MergeParams params;
+    lsda::MergeParams params = paperParams();
     params.mergeThreshold = 0.8;
     EXPECT_EQ(2u, groupAndMerge(segments, params).size());
     lsda::MergeParams direction = params;
@@ -196,26 +213,77 @@ TEST(LSDAdvance_Merging, weights_and_proximity_ratio_change_the_outcome)
     EXPECT_EQ(1u, groupAndMerge(segments, ratio).size());
 }
 
-TEST(LSDAdvance_Merging, best_scores_fuse_first_into_their_best_baseline)
+TEST(LSDAdvance_MergingBaselines, best_scores_fuse_first_into_their_best_baseline)
 {
     // Two baselines, one piece closer to the second: it fuses there, not into the first.
     const std::vector<Vec4f> segments = {
         Vec4f(0, 0, 100, 0), Vec4f(180, 0.5f, 280, 0.5f), Vec4f(106, 0.25f, 176, 0.25f) };
-    const std::vector<Vec4f> merged = groupAndMerge(segments, lsda::MergeParams());
+    const std::vector<Vec4f> merged = groupAndMerge(segments, paperParams());
     ASSERT_EQ(2u, merged.size());
     expectSegmentNear(Vec4f(0, 0, 100, 0), merged[0], 1e-4);
     EXPECT_NEAR(106, merged[1][0], 0.1);
     EXPECT_NEAR(280, merged[1][2], 0.1);
 }
 
-TEST(LSDAdvance_Merging, single_segments_and_zero_length_segments_pass_through)
+TEST(LSDAdvance_MergingBaselines, single_segments_and_zero_length_segments_pass_through)
 {
     const std::vector<Vec4f> segments = { Vec4f(5, 5, 5, 5), Vec4f(5, 5, 5, 5), Vec4f(300, 300, 400, 300) };
-    const std::vector<Vec4f> merged = groupAndMerge(segments, lsda::MergeParams());
+    const std::vector<Vec4f> merged = groupAndMerge(segments, paperParams());
     ASSERT_EQ(3u, merged.size());
     for (const Vec4f& s : merged)
         for (int i = 0; i < 4; i++)
             EXPECT_TRUE(std::isfinite(s[i]));
+}
+
+TEST(LSDAdvance_MergingLongestFirst, equal_collinear_pieces_join)
+{
+    // The paper's rule keeps these two apart (both are baselines); longest-first joins them.
+    const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 202, 0) };
+    const std::vector<Vec4f> merged = groupAndMerge(segments, longestFirstParams());
+    ASSERT_EQ(1u, merged.size());
+    expectSegmentNear(Vec4f(0, 0, 202, 0), merged[0], 1e-3);
+}
+
+TEST(LSDAdvance_MergingLongestFirst, chain_of_pieces_joins_from_the_longest)
+{
+    // Pieces of y = 5 of lengths 60, 40, 80, 30 with 2 px gaps: the 80 px piece absorbs its
+    // neighbours one by one, then the ones beyond them.
+    const std::vector<Vec4f> segments = {
+        Vec4f(0, 5, 60, 5), Vec4f(62, 5, 102, 5), Vec4f(104, 5, 184, 5), Vec4f(186, 5, 216, 5) };
+    const std::vector<Vec4f> merged = groupAndMerge(segments, longestFirstParams());
+    ASSERT_EQ(1u, merged.size());
+    expectSegmentNear(Vec4f(0, 5, 216, 5), merged[0], 1e-3);
+}
+
+TEST(LSDAdvance_MergingLongestFirst, keeps_the_gate_the_threshold_and_polarity)
+{
+    lsda::MergeParams params = longestFirstParams();
+    const std::vector<Vec4f> parallel = { Vec4f(0, 0, 200, 0), Vec4f(195, 2, 265, 2) };
+    EXPECT_EQ(2u, groupAndMerge(parallel, params).size());
+    // Opposite directions: the two sides of a thin bar.
+    const std::vector<Vec4f> bar = { Vec4f(0, 0, 100, 0), Vec4f(204, 0.5f, 104, 0.5f) };
+    EXPECT_EQ(2u, groupAndMerge(bar, params).size());
+    const std::vector<Vec4f> gap = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };  // score 0.71
+    params.mergeThreshold = 0.72;
+    EXPECT_EQ(2u, groupAndMerge(gap, params).size());
+    params.mergeThreshold = 0.70;
+    EXPECT_EQ(1u, groupAndMerge(gap, params).size());
+}
+
+TEST(LSDAdvance_MergingLongestFirst, fused_segment_keeps_the_longest_piece_orientation)
+{
+    const std::vector<Vec4f> segments = { Vec4f(300, 0, 100, 0), Vec4f(95, 0, 45, 0) };
+    const std::vector<Vec4f> merged = groupAndMerge(segments, longestFirstParams());
+    ASSERT_EQ(1u, merged.size());
+    expectSegmentNear(Vec4f(300, 0, 45, 0), merged[0], 1e-3);
+}
+
+TEST(LSDAdvance_MergingNone, returns_every_segment_unchanged)
+{
+    lsda::MergeParams params;
+    params.strategy = lsda::MergeStrategy::NONE;
+    const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 202, 0), Vec4f(204, 0, 230, 0) };
+    EXPECT_EQ(segments, groupAndMerge(segments, params));
 }
 
 }} // namespace

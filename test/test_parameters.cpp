@@ -34,7 +34,7 @@ const double kInf = std::numeric_limits<double>::infinity();
 std::vector<RealParameter> realParameters()
 {
     return {
-        { "lsdScale", &LSDAdvance::setLsdScale, &LSDAdvance::getLsdScale, 0.8, { 1.0, 0.01, 0.5 }, { 0.0, -1, 1.01, kNaN, kInf } },
+        { "lsdScale", &LSDAdvance::setLsdScale, &LSDAdvance::getLsdScale, 1.0, { 1.0, 0.01, 0.5 }, { 0.0, -1, 1.01, kNaN, kInf } },
         { "lsdSigmaScale", &LSDAdvance::setLsdSigmaScale, &LSDAdvance::getLsdSigmaScale, 0.6, { 0.1, 100 }, { 0.0, -0.5, 101, kNaN, -kInf } },
         { "lsdQuant", &LSDAdvance::setLsdQuant, &LSDAdvance::getLsdQuant, 2.0, { 0.0, 255, 4 }, { -0.1, 256, kNaN } },
         { "lsdAngleTolerance", &LSDAdvance::setLsdAngleTolerance, &LSDAdvance::getLsdAngleTolerance, 22.5, { 1, 179.9 }, { 0, 180, -5, kNaN } },
@@ -46,7 +46,7 @@ std::vector<RealParameter> realParameters()
         { "directionWeight", &LSDAdvance::setDirectionWeight, &LSDAdvance::getDirectionWeight, 0.4, { 0.0, 1.0 }, { -0.01, 1.01, kNaN } },
         { "proximityWeight", &LSDAdvance::setProximityWeight, &LSDAdvance::getProximityWeight, 0.35, { 0.0, 1.0 }, { -0.01, 1.01, kNaN } },
         { "lengthWeight", &LSDAdvance::setLengthWeight, &LSDAdvance::getLengthWeight, 0.2, { 0.0, 1.0 }, { -0.01, 1.01, kNaN } },
-        { "proximityRatio", &LSDAdvance::setProximityRatio, &LSDAdvance::getProximityRatio, 0.1, { 0.001, 10 }, { 0.0, 10.5, kNaN } },
+        { "proximityRatio", &LSDAdvance::setProximityRatio, &LSDAdvance::getProximityRatio, 1.0, { 0.001, 10 }, { 0.0, 10.5, kNaN } },
         { "mergeThreshold", &LSDAdvance::setMergeThreshold, &LSDAdvance::getMergeThreshold, 0.6, { 0.0, 1.0 }, { -0.1, 1.1, kNaN } },
         { "maxPerpendicularOffset", &LSDAdvance::setMaxPerpendicularOffset, &LSDAdvance::getMaxPerpendicularOffset, 1.5, { 0.0, 100 }, { -0.1, 101, kNaN, kInf } },
     };
@@ -55,13 +55,19 @@ std::vector<RealParameter> realParameters()
 std::vector<IntParameter> intParameters()
 {
     return {
-        { "lsdRefine", &LSDAdvance::setLsdRefine, &LSDAdvance::getLsdRefine, LSD_REFINE_STD,
-          { LSD_REFINE_NONE, LSD_REFINE_ADV }, { -1, 3 } },
+        { "lsdRefine", &LSDAdvance::setLsdRefine, &LSDAdvance::getLsdRefine, LSD_REFINE_NONE,
+          { LSD_REFINE_STD, LSD_REFINE_ADV }, { -1, 3 } },
         { "lsdNumBins", &LSDAdvance::setLsdNumBins, &LSDAdvance::getLsdNumBins, 1024, { 1, 65536 }, { 0, -5, 65537 } },
         { "lengthFilterMode", &LSDAdvance::setLengthFilterMode, &LSDAdvance::getLengthFilterMode,
           LSDAdvance::LENGTH_FILTER_INTERFRAME, { LSDAdvance::LENGTH_FILTER_NONE, LSDAdvance::LENGTH_FILTER_ADAPTIVE }, { -1, 3 } },
         { "angleBinning", &LSDAdvance::setAngleBinning, &LSDAdvance::getAngleBinning,
           LSDAdvance::ANGLE_BINS_NEIGHBOURS, { LSDAdvance::ANGLE_BINS_STRICT }, { -1, 2 } },
+        { "lengthThreshold", &LSDAdvance::setLengthThreshold, &LSDAdvance::getLengthThreshold,
+          LSDAdvance::LENGTH_THRESHOLD_CAPPED, { LSDAdvance::LENGTH_THRESHOLD_PAPER }, { -1, 2 } },
+        { "mergeStrategy", &LSDAdvance::setMergeStrategy, &LSDAdvance::getMergeStrategy,
+          LSDAdvance::MERGE_LONGEST_FIRST, { LSDAdvance::MERGE_NONE, LSDAdvance::MERGE_BASELINES }, { -1, 3 } },
+        { "stageOrder", &LSDAdvance::setStageOrder, &LSDAdvance::getStageOrder,
+          LSDAdvance::MERGE_THEN_FILTER, { LSDAdvance::FILTER_THEN_MERGE }, { -1, 2 } },
     };
 }
 
@@ -196,27 +202,34 @@ TEST(LSDAdvance_Parameters, every_base_detector_parameter_changes_the_base_segme
 {
     const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
     ASSERT_FALSE(img.empty());
-    Ptr<LSDAdvance> reference = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
-    std::vector<Vec4f> expected, lines;
-    reference->detect(img, expected);
-
-    struct Change { const char* name; std::function<void(LSDAdvance&)> apply; };
+    typedef std::function<void(LSDAdvance&)> Apply;
+    // setUp is applied to the reference and to the changed detector, change to the latter only.
+    struct Change { const char* name; Apply setUp; Apply change; };
+    const Apply nothing = [](LSDAdvance&) {};
     const std::vector<Change> changes = {
-        { "lsdRefine", [](LSDAdvance& d) { d.setLsdRefine(LSD_REFINE_NONE); } },
-        { "lsdScale", [](LSDAdvance& d) { d.setLsdScale(0.5); } },
-        { "lsdSigmaScale", [](LSDAdvance& d) { d.setLsdSigmaScale(1.2); } },
-        { "lsdQuant", [](LSDAdvance& d) { d.setLsdQuant(8.0); } },
-        { "lsdAngleTolerance", [](LSDAdvance& d) { d.setLsdAngleTolerance(12.0); } },
-        { "lsdLogEps", [](LSDAdvance& d) { d.setLsdRefine(LSD_REFINE_ADV); d.setLsdLogEps(3.0); } },
-        { "lsdDensityThreshold", [](LSDAdvance& d) { d.setLsdDensityThreshold(0.95); } },
-        { "lsdNumBins", [](LSDAdvance& d) { d.setLsdNumBins(4); } },
+        { "lsdRefine", nothing, [](LSDAdvance& d) { d.setLsdRefine(LSD_REFINE_STD); } },
+        { "lsdScale", nothing, [](LSDAdvance& d) { d.setLsdScale(0.5); } },
+        { "lsdSigmaScale", [](LSDAdvance& d) { d.setLsdScale(0.8); }, [](LSDAdvance& d) { d.setLsdSigmaScale(1.2); } },
+        { "lsdQuant", nothing, [](LSDAdvance& d) { d.setLsdQuant(8.0); } },
+        { "lsdAngleTolerance", nothing, [](LSDAdvance& d) { d.setLsdAngleTolerance(12.0); } },
+        { "lsdLogEps", [](LSDAdvance& d) { d.setLsdRefine(LSD_REFINE_ADV); }, [](LSDAdvance& d) { d.setLsdLogEps(3.0); } },
+        { "lsdDensityThreshold", [](LSDAdvance& d) { d.setLsdRefine(LSD_REFINE_STD); },
+          [](LSDAdvance& d) { d.setLsdDensityThreshold(0.95); } },
+        { "lsdNumBins", nothing, [](LSDAdvance& d) { d.setLsdNumBins(4); } },
     };
     for (const Change& c : changes)
     {
         SCOPED_TRACE(c.name);
-        Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
-        c.apply(*detector);
-        detector->detect(img, lines);
+        Ptr<LSDAdvance> reference = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+        Ptr<LSDAdvance> changed = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+        reference->setMergeStrategy(LSDAdvance::MERGE_NONE);
+        changed->setMergeStrategy(LSDAdvance::MERGE_NONE);
+        c.setUp(*reference);
+        c.setUp(*changed);
+        c.change(*changed);
+        std::vector<Vec4f> expected, lines;
+        reference->detect(img, expected);
+        changed->detect(img, lines);
         EXPECT_NE(expected, lines);
     }
 }
@@ -233,11 +246,13 @@ TEST(LSDAdvance_Parameters, grouping_and_merging_parameters_change_the_output)
         { "angleBinWidth", [](LSDAdvance& d) { d.setAngleBinWidth(3.0); } },
         { "angleBinning", [](LSDAdvance& d) { d.setAngleBinning(LSDAdvance::ANGLE_BINS_STRICT); } },
         { "endpointDistance", [](LSDAdvance& d) { d.setEndpointDistance(2.0); } },
-        { "baselineRatio", [](LSDAdvance& d) { d.setBaselineRatio(0.3); } },
+        { "baselineRatio", [](LSDAdvance& d) { d.setMergeStrategy(LSDAdvance::MERGE_BASELINES); d.setBaselineRatio(0.3); } },
+        { "mergeStrategy", [](LSDAdvance& d) { d.setMergeStrategy(LSDAdvance::MERGE_BASELINES); } },
+        { "stageOrder", [](LSDAdvance& d) { d.setStageOrder(LSDAdvance::FILTER_THEN_MERGE); } },
         { "directionWeight", [](LSDAdvance& d) { d.setDirectionWeight(0.0); } },
         { "proximityWeight", [](LSDAdvance& d) { d.setProximityWeight(0.0); } },
         { "lengthWeight", [](LSDAdvance& d) { d.setLengthWeight(0.6); } },
-        { "proximityRatio", [](LSDAdvance& d) { d.setProximityRatio(1.0); } },
+        { "proximityRatio", [](LSDAdvance& d) { d.setProximityRatio(0.1); } },
         { "mergeThreshold", [](LSDAdvance& d) { d.setMergeThreshold(1.0); } },
         { "maxPerpendicularOffset", [](LSDAdvance& d) { d.setMaxPerpendicularOffset(4.0); } },
     };

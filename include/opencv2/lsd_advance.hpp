@@ -6,6 +6,7 @@
 #define OPENCV_LSD_ADVANCE_HPP
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
+#include "opencv2/lsd_advance/evaluation.hpp"
 
 /** @defgroup lsd_advance Improved line segment detection for SLAM front ends
 

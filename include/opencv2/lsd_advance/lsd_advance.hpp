@@ -21,14 +21,15 @@ Counts are numbers of segments after each stage; times are wall-clock millisecon
 struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
 {
     LSDAdvanceStats()
-        : baseSegments(0), filteredSegments(0), mergeGroups(0), outputSegments(0),
+        : baseSegments(0), mergedSegments(0), filteredSegments(0), mergeGroups(0), outputSegments(0),
           minLength(0), alpha(1), baseMs(0), filterMs(0), groupingMs(0), mergingMs(0)
     {}
 
     CV_PROP_RW int baseSegments;     //!< segments returned by the base detector (stage 0)
+    CV_PROP_RW int mergedSegments;   //!< segments after merging (stage 3)
     CV_PROP_RW int filteredSegments; //!< segments that survived the length filter (stage 1)
     CV_PROP_RW int mergeGroups;      //!< endpoint groups holding two or more segments (stage 2)
-    CV_PROP_RW int outputSegments;   //!< segments returned after merging (stage 3)
+    CV_PROP_RW int outputSegments;   //!< segments returned
     CV_PROP_RW double minLength;     //!< length threshold of stage 1, in pixels (0 when the filter is off)
     CV_PROP_RW double alpha;         //!< inter-frame factor used by stage 1, in (0, 1.2]
     CV_PROP_RW double baseMs;        //!< time of stage 0, ms
@@ -46,31 +47,44 @@ An example comparing LSDAdvance with OpenCV's LineSegmentDetector on building.jp
 The segments of OpenCV's LineSegmentDetector (@cite Rafael12) are post-processed in three stages:
 1. **Adaptive length suppression**: with @f$\mu@f$ and @f$\sigma@f$ the mean and population
    standard deviation of the segment lengths of the frame, segments shorter than
-   @f$L_{min} = \alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$ are dropped. @f$\alpha@f$ is 1 for a
+   @f$L_{min} = \alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$ (the paper's rule; by default
+   @f$\alpha \min(\mu, \sigma)@f$, see LengthThresholdRule) are dropped. @f$\alpha@f$ is 1 for a
    single image; in a sequence it follows the change of the count of kept segments over the two
    previous frames (see LENGTH_FILTER_INTERFRAME).
 2. **Grouping**: segments are binned by undirected angle (getAngleBinWidth), and two segments
    of the same (or, by default, a neighbouring) bin are connected when two of their endpoints
    are closer than getEndpointDistance. Connected components are the merge groups.
-3. **Similarity-ordered merging**: in each group, the segments at least getBaselineRatio times
-   as long as the longest are baselines. Every other segment L is scored against each
-   baseline B with @f$S = w_d S_d + w_p S_p + w_l S_l@f$ (direction: cosine of the angle
-   between the directed segments, clipped at 0; proximity: @f$1 - D_{min}/D_{th}@f$ clipped at 0,
+3. **Similarity-ordered merging**: in each group, a segment L is scored against a longer
+   segment B (with MERGE_BASELINES, the paper's rule, only against the baselines: the segments
+   at least getBaselineRatio times as long as the longest) with
+   @f$S = w_d S_d + w_p S_p + w_l S_l@f$ (direction: cosine of the angle between the directed segments, clipped at 0; proximity: @f$1 - D_{min}/D_{th}@f$ clipped at 0,
    @f$D_{th}@f$ = getProximityRatio times the mean length of B and L; length:
-   @f$1 - |l_B - l_L| / \max(l_B, l_L)@f$) and fused into its best baseline, best scores
-   first, when @f$S \ge@f$ getMergeThreshold and both of its endpoints lie within
+   @f$1 - |l_B - l_L| / \max(l_B, l_L)@f$) and fused into B, best scores first, when
+   @f$S \ge@f$ getMergeThreshold and both of its endpoints lie within
    getMaxPerpendicularOffset of B's line. The fused segment passes through the
    length-weighted centre of B and L, along their length-weighted mean direction, and spans
    the projections of all four endpoints.
 
-@note Differences from @cite Guan2026, each chosen to fix a gap of the paper: collinear pieces
+@note The defaults are not the paper's configuration; each was chosen by measurement on half of
+YorkUrban-LineSegment and checked on the other half (doc/parameter_sweep.md): the base LSD reads
+the image at full scale without refinement (LSD_REFINE_NONE, scale 1; OpenCV's LSD uses
+LSD_REFINE_STD at scale 0.8 and is about 1.5 times faster), the length threshold is capped at
+the mean length (LENGTH_THRESHOLD_CAPPED: the paper's rule falls to 0 on frames with a few very
+long segments, which such a base detector often gives), merging runs before the length
+filter (MERGE_THEN_FILTER: the paper's order drops pieces that merging would join), every
+segment can absorb the shorter ones (MERGE_LONGEST_FIRST: the paper's baselines never join each
+other), and the proximity term uses 1.0 times the mean length instead of 0.1. The paper's
+configuration is LSD_REFINE_STD, scale 0.8, LENGTH_THRESHOLD_PAPER, FILTER_THEN_MERGE,
+MERGE_BASELINES and proximityRatio 0.1.
+
+@note Further differences from @cite Guan2026, each chosen to fix a gap of the paper: collinear pieces
 that straddle an angle-bin edge (9.9 vs 10.1 deg, 179.9 vs 0.1 deg) are paired across it
 (ANGLE_BINS_NEIGHBOURS); the centre of a fused segment drops the paper's extra factor 1/2; the
 mean direction is computed on unit vectors, never as a mean of angles across the 0/180 wrap;
 the merge threshold and the perpendicular-offset gate are additions (the paper gives neither;
-the gate keeps two parallel edges 2 px apart from fusing); merging repeats over the group until
-no score reaches the threshold, each score being computed against the current (already grown)
-baseline, so that a chain of pieces joins a baseline piece by piece.
+the gate keeps two parallel edges 2 px apart from fusing); with MERGE_BASELINES, merging repeats
+over the group until no score reaches the threshold, each score being computed against the
+current (already grown) baseline, so that a chain of pieces joins a baseline piece by piece.
 
 **Orientation.** Like LSD, each segment (x1, y1, x2, y2) points from its start to its end so
 that, on the image as displayed (y pointing down), the brighter side is on its left and the
@@ -99,6 +113,41 @@ public:
         LENGTH_FILTER_INTERFRAME = 2
     };
 
+    /** @brief The rule of stage 1's length threshold, from the mean @f$\mu@f$ and the population
+    standard deviation @f$\sigma@f$ of the base segments' lengths. */
+    enum LengthThresholdRule
+    {
+        /** the paper's @f$\alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$, clamped at 0: @f$\alpha\sigma@f$
+        while @f$\sigma \le \mu@f$, then falling to 0 at @f$\sigma = 2\mu@f$, so a frame with a
+        few very long segments among many short ones is not filtered at all */
+        LENGTH_THRESHOLD_PAPER = 0,
+        /** @f$\alpha \min(\mu, \sigma)@f$ (default): the paper's value while
+        @f$\sigma \le \mu@f$, and @f$\alpha\mu@f$ beyond */
+        LENGTH_THRESHOLD_CAPPED = 1
+    };
+
+    /** @brief How stage 3 fuses the segments of a group. */
+    enum MergeStrategy
+    {
+        MERGE_NONE = 0,          //!< no fusion (stage 2 and 3 are skipped)
+        /** the paper's rule: segments at least getBaselineRatio times as long as the group's
+        longest are baselines, which never fuse with each other; the others fuse into them */
+        MERGE_BASELINES = 1,
+        /** every segment, from the longest down, absorbs the shorter segments of its group that pass
+        the gate and the threshold, best score first (default). Unlike MERGE_BASELINES, two long
+        collinear pieces of one edge can join, and a chain of short pieces can join each other. */
+        MERGE_LONGEST_FIRST = 2
+    };
+
+    /** @brief Order of the stages. */
+    enum StageOrder
+    {
+        FILTER_THEN_MERGE = 0,  //!< the paper's order: length filter, then grouping and merging
+        /** grouping and merging first, then the length filter with the threshold computed on the
+        base segments (default): pieces that merge into a long segment are not lost to the filter */
+        MERGE_THEN_FILTER = 1
+    };
+
     /** @brief Which angle bins may be grouped together in stage 2. */
     enum AngleBinning
     {
@@ -118,6 +167,14 @@ public:
     */
     CV_WRAP virtual void detect(InputArray image, OutputArray lines) = 0;
 
+    /** @brief Runs the stages after base detection on segments from any detector.
+
+    @param segments Input segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), oriented as
+    LSD orients them when the orientation of the output matters.
+    @param lines Output like detect(). The call is a frame of the sequence, like detect().
+    */
+    CV_WRAP virtual void processSegments(InputArray segments, OutputArray lines) = 0;
+
     /** @brief Forgets the sequence: the next detect() is the first frame (alpha = 1).
 
     Setting a parameter that changes the counts of stage 1 (every base-detector parameter and
@@ -128,13 +185,14 @@ public:
     /** @brief Returns counts, the length threshold, alpha and stage times of the last detect(). */
     CV_WRAP virtual LSDAdvanceStats getLastStats() const = 0;
 
-    /** @brief Refinement of the base LSD, one of cv::LineSegmentDetectorModes. Default LSD_REFINE_STD. */
+    /** @brief Refinement of the base LSD, one of cv::LineSegmentDetectorModes. Default LSD_REFINE_NONE
+    (OpenCV's LSD defaults to LSD_REFINE_STD; see the class note). */
     CV_WRAP virtual void setLsdRefine(int refine) = 0;
     CV_WRAP virtual int getLsdRefine() const = 0;
-    /** @brief Scale at which the base LSD reads the image, in (0, 1]. Default 0.8. */
+    /** @brief Scale at which the base LSD reads the image, in (0, 1]. Default 1.0 (OpenCV's LSD: 0.8). */
     CV_WRAP virtual void setLsdScale(double scale) = 0;
     CV_WRAP virtual double getLsdScale() const = 0;
-    /** @brief Gaussian sigma of the base LSD is sigmaScale / scale; in (0, 100]. Default 0.6. */
+    /** @brief Gaussian sigma of the base LSD is sigmaScale / scale, used only when scale < 1; in (0, 100]. Default 0.6. */
     CV_WRAP virtual void setLsdSigmaScale(double sigmaScale) = 0;
     CV_WRAP virtual double getLsdSigmaScale() const = 0;
     /** @brief Bound to the quantization error on the gradient norm, in [0, 255]. Default 2.0. */
@@ -146,7 +204,8 @@ public:
     /** @brief Detection threshold -log10(NFA) > logEps, used with LSD_REFINE_ADV; in [-1000, 1000]. Default 0. */
     CV_WRAP virtual void setLsdLogEps(double logEps) = 0;
     CV_WRAP virtual double getLsdLogEps() const = 0;
-    /** @brief Minimal density of aligned points in a region's rectangle, in [0, 1). Default 0.7. */
+    /** @brief Minimal density of aligned points in a region's rectangle, used with LSD_REFINE_STD and
+    LSD_REFINE_ADV; in [0, 1). Default 0.7. */
     CV_WRAP virtual void setLsdDensityThreshold(double density) = 0;
     CV_WRAP virtual double getLsdDensityThreshold() const = 0;
     /** @brief Number of bins in the pseudo-ordering of gradient modulus, in [1, 65536]. Default 1024. */
@@ -156,6 +215,17 @@ public:
     /** @brief Stage 1 mode, one of LSDAdvance::LengthFilterMode. Default LENGTH_FILTER_INTERFRAME. */
     CV_WRAP virtual void setLengthFilterMode(int mode) = 0;
     CV_WRAP virtual int getLengthFilterMode() const = 0;
+
+    /** @brief Stage 1 threshold rule, one of LSDAdvance::LengthThresholdRule. Default LENGTH_THRESHOLD_CAPPED. */
+    CV_WRAP virtual void setLengthThreshold(int rule) = 0;
+    CV_WRAP virtual int getLengthThreshold() const = 0;
+
+    /** @brief Stage 3 strategy, one of LSDAdvance::MergeStrategy. Default MERGE_LONGEST_FIRST. */
+    CV_WRAP virtual void setMergeStrategy(int strategy) = 0;
+    CV_WRAP virtual int getMergeStrategy() const = 0;
+    /** @brief Order of the stages, one of LSDAdvance::StageOrder. Default MERGE_THEN_FILTER. */
+    CV_WRAP virtual void setStageOrder(int order) = 0;
+    CV_WRAP virtual int getStageOrder() const = 0;
 
     /** @brief Width of the angle bins of stage 2 in degrees, in [1, 90]. Default 10.
 
@@ -171,7 +241,8 @@ public:
     CV_WRAP virtual void setEndpointDistance(double pixels) = 0;
     CV_WRAP virtual double getEndpointDistance() const = 0;
 
-    /** @brief Segments at least this share of the group's longest are baselines, in (0, 1]. Default 0.8. */
+    /** @brief With MERGE_BASELINES, segments at least this share of the group's longest are
+    baselines, in (0, 1]. Default 0.8. Unused by the other strategies. */
     CV_WRAP virtual void setBaselineRatio(double ratio) = 0;
     CV_WRAP virtual double getBaselineRatio() const = 0;
     /** @brief Weight of the direction term of the score, in [0, 1]. Default 0.4. */
@@ -183,7 +254,8 @@ public:
     /** @brief Weight of the length term of the score, in [0, 1]. Default 0.2. */
     CV_WRAP virtual void setLengthWeight(double weight) = 0;
     CV_WRAP virtual double getLengthWeight() const = 0;
-    /** @brief The proximity term reaches 0 at this share of the pair's mean length, in (0, 10]. Default 0.1. */
+    /** @brief The proximity term reaches 0 at this share of the pair's mean length, in (0, 10].
+    Default 1.0 (the paper: 0.1). */
     CV_WRAP virtual void setProximityRatio(double ratio) = 0;
     CV_WRAP virtual double getProximityRatio() const = 0;
     /** @brief A segment fuses into a baseline when its score reaches this, in [0, 1]. Default 0.6. */

@@ -1,0 +1,128 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The line detectors the samples compare, behind one small interface. OpenCV's detectors are
+// used as they are; only their construction is here.
+
+#ifndef OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
+#define OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
+
+#include <opencv2/lsd_advance.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/ximgproc.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+struct LineMethod
+{
+    std::string name;
+    //! Detects on a gray image; consecutive calls may form a sequence.
+    std::function<void(const cv::Mat&, std::vector<cv::Vec4f>&)> detect;
+    //! Starts a new sequence (no-op for detectors without sequence state).
+    std::function<void()> reset;
+};
+
+//! Names accepted by makeLineMethod, for help texts.
+inline const char* lineMethodNames()
+{
+    return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base";
+}
+
+inline LineMethod lineMethodOf(const std::string& name,
+                               const std::function<void(const cv::Mat&, std::vector<cv::Vec4f>&)>& detect)
+{
+    return LineMethod{ name, detect, [] {} };
+}
+
+//! An LSDAdvance detector as a method; its sequence state is reset by reset().
+inline LineMethod lineMethodOf(const std::string& name, const cv::Ptr<cv::ximgproc::LSDAdvance>& detector)
+{
+    return LineMethod{ name,
+                       [detector](const cv::Mat& gray, std::vector<cv::Vec4f>& lines) { detector->detect(gray, lines); },
+                       [detector] { detector->reset(); } };
+}
+
+//! PL-VINS's LSD set-up: half scale, looser density, lines >= 1/8 of the smaller image side.
+inline void detectPlVins(const cv::Ptr<cv::LineSegmentDetector>& lsd, const cv::Mat& gray,
+                         std::vector<cv::Vec4f>& lines)
+{
+    std::vector<cv::Vec4f> all;
+    lsd->detect(gray, all);
+    const double minLength = 0.125 * std::min(gray.cols, gray.rows);
+    lines.clear();
+    for (const cv::Vec4f& l : all)
+        if (std::hypot(l[2] - l[0], l[3] - l[1]) >= minLength)
+            lines.push_back(l);
+}
+
+//! LSDAdvance as the paper describes it: OpenCV's default LSD as the base, the length filter
+//! first, then merging into the baselines of each group.
+inline cv::Ptr<cv::ximgproc::LSDAdvance> paperLSDAdvance()
+{
+    using cv::ximgproc::LSDAdvance;
+    cv::Ptr<LSDAdvance> detector = cv::ximgproc::createLSDAdvance();
+    detector->setLsdRefine(cv::LSD_REFINE_STD);
+    detector->setLsdScale(0.8);
+    detector->setLengthThreshold(LSDAdvance::LENGTH_THRESHOLD_PAPER);
+    detector->setStageOrder(LSDAdvance::FILTER_THEN_MERGE);
+    detector->setMergeStrategy(LSDAdvance::MERGE_BASELINES);
+    detector->setProximityRatio(0.1);
+    return detector;
+}
+
+//! One of lineMethodNames(); params, when given, configures LSDAdvance. Throws on an unknown name.
+inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& params = cv::FileNode())
+{
+    using namespace cv;
+    if (name == "lsd")
+    {
+        Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
+        return lineMethodOf("LSD", [lsd](const Mat& g, std::vector<Vec4f>& l) { lsd->detect(g, l); });
+    }
+    if (name == "fld" || name == "fld_merge")
+    {
+        const bool merge = name == "fld_merge";
+        Ptr<ximgproc::FastLineDetector> fld = ximgproc::createFastLineDetector(10, 1.414213562f, 50, 50, 3, merge);
+        return lineMethodOf(merge ? "FLD+merge" : "FLD", [fld](const Mat& g, std::vector<Vec4f>& l) { fld->detect(g, l); });
+    }
+    if (name == "edlines")
+    {
+        Ptr<ximgproc::EdgeDrawing> ed = ximgproc::createEdgeDrawing();
+        return lineMethodOf("EDLines", [ed](const Mat& g, std::vector<Vec4f>& l) {
+            ed->detectEdges(g);
+            ed->detectLines(l);
+        });
+    }
+    if (name == "plvins")
+    {
+        Ptr<LineSegmentDetector> lsd = createLineSegmentDetector(LSD_REFINE_STD, 0.5, 0.6, 2.0, 22.5, 0, 0.6, 1024);
+        return lineMethodOf("PL-VINS LSD", [lsd](const Mat& g, std::vector<Vec4f>& l) { detectPlVins(lsd, g, l); });
+    }
+    if (name == "lsdadvance")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        if (!params.empty())
+            detector->read(params);
+        return lineMethodOf("LSDAdvance", detector);
+    }
+    if (name == "lsdadvance_paper")
+        return lineMethodOf("LSDAdvance (paper)", paperLSDAdvance());
+    if (name == "lsdadvance_filter")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = paperLSDAdvance();
+        detector->setMergeStrategy(ximgproc::LSDAdvance::MERGE_NONE);
+        return lineMethodOf("LSDAdvance (paper, length filter only)", detector);
+    }
+    if (name == "lsdadvance_base")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE);
+        detector->setMergeStrategy(ximgproc::LSDAdvance::MERGE_NONE);
+        return lineMethodOf("LSDAdvance's base LSD alone", detector);
+    }
+    CV_Error_(Error::StsBadArg, ("unknown method '%s'; known: %s", name.c_str(), lineMethodNames()));
+}
+
+#endif

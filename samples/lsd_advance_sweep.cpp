@@ -1,0 +1,181 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Chooses LSDAdvance's open thresholds by measurement: a grid over the base detector set-up,
+// the merge strategy, the stage order, endpointDistance, mergeThreshold, proximityRatio and
+// maxPerpendicularOffset, scored with the structural F on one half of YorkUrban (even or odd
+// images), then the best setting and the defaults checked on the other half.
+// Base segments are detected once per image and set-up; LSDAdvance::processSegments runs the
+// other stages, so the whole grid takes about a minute.
+
+#include <opencv2/core/utility.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/lsd_advance.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+using namespace cv;
+using namespace cv::ximgproc;
+
+namespace {
+
+struct BaseSetup
+{
+    const char* name;
+    int refine;
+    double scale;
+};
+
+const BaseSetup kBases[] = { { "LSD default (STD, 0.8)", LSD_REFINE_STD, 0.8 },
+                             { "LSD NONE, 1.0", LSD_REFINE_NONE, 1.0 } };
+
+struct Setting
+{
+    int base, strategy, order;
+    double endpointDistance, mergeThreshold, proximityRatio, maxOffset;
+};
+
+struct Score
+{
+    double ap = 0, ar = 0, f = 0, segments = 0;
+};
+
+// base[b][k]: segments of set-up b on image k.
+typedef std::vector<std::vector<std::vector<Vec4f> > > BaseSegments;
+
+Ptr<LSDAdvance> detectorFor(const Setting& s)
+{
+    Ptr<LSDAdvance> d = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, s.endpointDistance, s.mergeThreshold);
+    d->setMergeStrategy(s.strategy);
+    d->setStageOrder(s.order);
+    d->setProximityRatio(s.proximityRatio);
+    d->setMaxPerpendicularOffset(s.maxOffset);
+    return d;
+}
+
+Score evaluate(const Ptr<LSDAdvance>& detector, const std::vector<std::vector<Vec4f> >& base,
+               const std::vector<LabelledImage>& images, const std::vector<int>& subset)
+{
+    Score score;
+    std::vector<Vec4f> lines;
+    for (int k : subset)
+    {
+        detector->processSegments(base[k], lines);
+        const StructuralScore s = evaluateStructural(lines, images[k].groundTruth);
+        score.ap += s.precision;
+        score.ar += s.recall;
+        score.segments += (double)lines.size();
+    }
+    score.ap /= subset.size();
+    score.ar /= subset.size();
+    score.segments /= subset.size();
+    score.f = fScore(score.ap, score.ar);
+    return score;
+}
+
+const char* strategyName(int s)
+{
+    return s == LSDAdvance::MERGE_BASELINES ? "baselines" : s == LSDAdvance::MERGE_LONGEST_FIRST ? "longest first" : "none";
+}
+
+const char* orderName(int o)
+{
+    return o == LSDAdvance::FILTER_THEN_MERGE ? "filter, merge" : "merge, filter";
+}
+
+void printRow(const Setting& s, const Score& tune, const Score* check)
+{
+    std::printf("| %s | %s | %s | %g | %g | %g | %g | %.3f | %.3f | %.3f | %.0f |", kBases[s.base].name,
+                strategyName(s.strategy), orderName(s.order), s.endpointDistance, s.mergeThreshold,
+                s.proximityRatio, s.maxOffset, tune.ap, tune.ar, tune.f, tune.segments);
+    if (check)
+        std::printf(" %.3f | %.3f | %.3f |", check->ap, check->ar, check->f);
+    std::printf("\n");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const String keys =
+        "{help h |      | print this help }"
+        "{data   |      | YorkUrban folder (images/, gt/, list.txt) }"
+        "{tune   | even | half to tune on: even or odd images of list.txt; the other half checks }"
+        "{top    | 15   | rows of the sorted grid to print }";
+    CommandLineParser parser(argc, argv, keys);
+    if (parser.has("help") || !parser.has("data"))
+    {
+        parser.printMessage();
+        return parser.has("help") ? 0 : 1;
+    }
+    const String data = parser.get<String>("data");
+    const bool tuneEven = parser.get<String>("tune") == "even";
+    const int top = parser.get<int>("top");
+    setNumThreads(1);
+
+    const std::vector<LabelledImage> images = loadYorkUrban(data);
+    std::vector<int> tuneSet, checkSet;
+    for (int k = 0; k < (int)images.size(); k++)
+        ((k % 2 == 0) == tuneEven ? tuneSet : checkSet).push_back(k);
+
+    BaseSegments base(sizeof(kBases) / sizeof(kBases[0]), std::vector<std::vector<Vec4f> >(images.size()));
+    for (size_t k = 0; k < images.size(); k++)
+    {
+        std::cerr << "\r[sweep] base segments " << k + 1 << "/" << images.size() << std::flush;
+        const Mat gray = imread(images[k].imagePath, IMREAD_GRAYSCALE);
+        CV_Assert(!gray.empty());
+        for (size_t b = 0; b < base.size(); b++)
+            createLineSegmentDetector(kBases[b].refine, kBases[b].scale)->detect(gray, base[b][k]);
+    }
+    std::cerr << "\n";
+
+    std::vector<std::pair<Score, Setting> > results;
+    for (int b = 0; b < (int)base.size(); b++)
+        for (int strategy : { (int)LSDAdvance::MERGE_BASELINES, (int)LSDAdvance::MERGE_LONGEST_FIRST })
+            for (int order : { (int)LSDAdvance::FILTER_THEN_MERGE, (int)LSDAdvance::MERGE_THEN_FILTER })
+                for (double distance : { 5.0, 10.0, 15.0 })
+                    for (double threshold : { 0.5, 0.6, 0.7 })
+                        for (double ratio : { 0.1, 0.4, 1.0, 2.0 })
+                            for (double offset : { 1.0, 1.5, 2.0 })
+                            {
+                                const Setting s = { b, strategy, order, distance, threshold, ratio, offset };
+                                results.push_back(std::make_pair(evaluate(detectorFor(s), base[b], images, tuneSet), s));
+                                std::cerr << "\r[sweep] setting " << results.size() << std::flush;
+                            }
+    std::cerr << "\n";
+    std::stable_sort(results.begin(), results.end(), [](const std::pair<Score, Setting>& a, const std::pair<Score, Setting>& b) {
+        return a.first.f > b.first.f;
+    });
+
+    std::printf("Grid of %zu settings, tuned on the %s images (%zu), checked on the others (%zu); length filter "
+                "with alpha = 1 (LENGTH_FILTER_ADAPTIVE), angle bins 10 deg with neighbours, weights 0.4/0.35/0.2.\n\n",
+                results.size(), tuneEven ? "even" : "odd", tuneSet.size(), checkSet.size());
+    std::printf("| base | merge | order | endpointDistance | mergeThreshold | proximityRatio | maxPerpendicularOffset "
+                "| AP (tune) | AR (tune) | F (tune) | segments | AP (check) | AR (check) | F (check) |\n");
+    std::printf("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (int i = 0; i < std::min(top, (int)results.size()); i++)
+    {
+        const Setting& s = results[i].second;
+        const Score check = evaluate(detectorFor(s), base[s.base], images, checkSet);
+        printRow(s, results[i].first, &check);
+    }
+
+    // The paper's configuration within the grid, and OpenCV's LSD, on both halves.
+    std::printf("\nReferences on both halves (tune / check):\n\n");
+    const Setting paper = { 0, LSDAdvance::MERGE_BASELINES, LSDAdvance::FILTER_THEN_MERGE, 10, 0.6, 0.1, 1.5 };
+    const Score paperTune = evaluate(detectorFor(paper), base[0], images, tuneSet);
+    const Score paperCheck = evaluate(detectorFor(paper), base[0], images, checkSet);
+    std::printf("- paper's stages on OpenCV's default LSD: F %.3f / %.3f\n", paperTune.f, paperCheck.f);
+    for (size_t b = 0; b < base.size(); b++)
+    {
+        Ptr<LSDAdvance> none = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+        none->setMergeStrategy(LSDAdvance::MERGE_NONE);
+        std::printf("- %s alone: F %.3f / %.3f\n", kBases[b].name, evaluate(none, base[b], images, tuneSet).f,
+                    evaluate(none, base[b], images, checkSet).f);
+    }
+    return 0;
+}

@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# This file is part of OpenCV project.
+# It is subject to the license terms in the LICENSE file found in the top-level directory
+# of this distribution and at http://opencv.org/license.html.
+#
+# Usage: bash scripts/check_intree.sh
+#
+# In-tree build check: builds OpenCV (same version as Debian's libopencv-dev, from Debian's
+# source package) with this checkout as an extra module, exactly as opencv_contrib modules are
+# built, then runs the in-tree opencv_test_lsd_advance and imports the Python bindings.
+#
+# Environment:
+#   LSD_ADVANCE_INTREE_DIR  scratch dir (default: <repo>/build-intree); holds modules/lsd_advance
+#                           (a copy of this checkout's module files: OpenCV takes the module name
+#                           from the folder name) and the OpenCV build dir opencv-build/
+#   OPENCV_SOURCE_DIR       OpenCV source tree with contrib/ (default: the one
+#                           scripts/fetch_opencv_source.sh fetches)
+#   LSD_ADVANCE_INTREE_PYTHON=0  skip the cv2 bindings build and import check
+#   LSD_ADVANCE_DATA_DIR    passed through to the tests
+set -euo pipefail
+
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+SCRATCH="${LSD_ADVANCE_INTREE_DIR:-$REPO/build-intree}"
+WITH_PYTHON="${LSD_ADVANCE_INTREE_PYTHON:-1}"
+JOBS="${LSD_ADVANCE_JOBS:-2}"
+T0=$SECONDS
+
+section() { echo; echo "==== [check_intree] $* ($((SECONDS - T0)) s)"; }
+
+section "dependencies"
+bash "$REPO/scripts/install_deps.sh" --intree
+
+section "OpenCV source"
+if [ -z "${OPENCV_SOURCE_DIR:-}" ]; then
+  OPENCV_SOURCE_DIR="$(bash "$REPO/scripts/fetch_opencv_source.sh" | tail -n1)"
+fi
+[ -d "$OPENCV_SOURCE_DIR/contrib/modules/ximgproc" ] \
+  || { echo "ERROR: $OPENCV_SOURCE_DIR has no contrib/modules/ximgproc" >&2; exit 1; }
+echo "OpenCV source: $OPENCV_SOURCE_DIR"
+
+# OpenCV derives the module name from the folder name: mirror the module's files into
+# $SCRATCH/modules/lsd_advance (a copy, not a symlink: the scratch dir may live inside the
+# checkout). Only files whose content changed are rewritten (with a fresh mtime), so the
+# build system rebuilds exactly what changed; files gone from the checkout are removed.
+MODDIR="$SCRATCH/modules/lsd_advance"
+mkdir -p "$MODDIR"
+MODULE_ENTRIES=(CMakeLists.txt cmake include src test perf samples doc)
+( cd "$MODDIR" && find . -type f ) | while IFS= read -r f; do
+  [ -f "$REPO/$f" ] || rm -f "$MODDIR/$f"
+done
+for entry in "${MODULE_ENTRIES[@]}"; do
+  [ -e "$REPO/$entry" ] || continue
+  ( cd "$REPO" && find "$entry" -type f ) | while IFS= read -r f; do
+    if ! cmp -s "$REPO/$f" "$MODDIR/$f"; then
+      mkdir -p "$(dirname "$MODDIR/$f")"
+      cp "$REPO/$f" "$MODDIR/$f"
+    fi
+  done
+done
+BUILD="$SCRATCH/opencv-build"
+
+BUILD_LIST="core,imgproc,imgcodecs,videoio,highgui,features2d,flann,calib3d,video,ts,ximgproc,line_descriptor,lsd_advance"
+PY_ARGS=(-DBUILD_opencv_python3=OFF -DBUILD_opencv_python2=OFF)
+if [ "$WITH_PYTHON" = 1 ]; then
+  BUILD_LIST="$BUILD_LIST,python3"
+  PY_ARGS=(-DBUILD_opencv_python3=ON -DBUILD_opencv_python2=OFF
+           -DPYTHON3_EXECUTABLE=/usr/bin/python3 -DPYTHON_DEFAULT_EXECUTABLE=/usr/bin/python3)
+fi
+# A build dir configured from another OpenCV source tree cannot be reused: start it afresh.
+if [ -f "$BUILD/CMakeCache.txt" ]; then
+  old_src="$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$BUILD/CMakeCache.txt")"
+  if [ "$(cd "$old_src" 2>/dev/null && pwd -P)" != "$(cd "$OPENCV_SOURCE_DIR" && pwd -P)" ]; then
+    echo "Build dir $BUILD was configured from '$old_src': removing it"
+    rm -rf "$BUILD"
+  fi
+fi
+GEN_ARGS=()
+if command -v ninja >/dev/null 2>&1 && [ ! -f "$BUILD/Makefile" ]; then GEN_ARGS=(-G Ninja); fi
+CCACHE_ARGS=(-DENABLE_CCACHE=OFF)
+if command -v ccache >/dev/null 2>&1; then CCACHE_ARGS=(-DENABLE_CCACHE=ON); fi
+
+section "configure OpenCV ($BUILD)"
+cmake -S "$OPENCV_SOURCE_DIR" -B "$BUILD" "${GEN_ARGS[@]}" \
+  -DCMAKE_BUILD_TYPE=Release \
+  -DOPENCV_EXTRA_MODULES_PATH="$OPENCV_SOURCE_DIR/contrib/modules/ximgproc;$OPENCV_SOURCE_DIR/contrib/modules/line_descriptor;$SCRATCH/modules/lsd_advance" \
+  -DBUILD_LIST="$BUILD_LIST" \
+  -DBUILD_SHARED_LIBS=ON -DBUILD_TESTS=ON -DBUILD_PERF_TESTS=ON -DBUILD_EXAMPLES=ON \
+  -DBUILD_DOCS=OFF -DBUILD_opencv_apps=OFF -DBUILD_JAVA=OFF -DBUILD_opencv_java=OFF -DBUILD_opencv_js=OFF \
+  -DBUILD_opencv_world=OFF -DINSTALL_TESTS=OFF -DOPENCV_GENERATE_PKGCONFIG=OFF \
+  "${PY_ARGS[@]}" "${CCACHE_ARGS[@]}" \
+  -DOPENCV_DOWNLOAD_TRIES_LIST= -DOPENCV_SKIP_PYTHON_WARNING=ON \
+  -DCPU_DISPATCH= -DENABLE_PRECOMPILED_HEADERS=OFF \
+  -DWITH_IPP=OFF -DWITH_OPENCL=OFF -DWITH_CUDA=OFF -DWITH_ITT=OFF -DWITH_CAROTENE=OFF \
+  -DWITH_EIGEN=OFF -DWITH_LAPACK=OFF -DWITH_TBB=OFF -DWITH_OPENMP=OFF -DWITH_VA=OFF -DWITH_VA_INTEL=OFF \
+  -DWITH_FFMPEG=OFF -DWITH_GSTREAMER=OFF -DWITH_V4L=OFF -DWITH_1394=OFF -DWITH_GPHOTO2=OFF \
+  -DWITH_GTK=OFF -DWITH_QT=OFF -DWITH_OPENGL=OFF -DWITH_VTK=OFF \
+  -DWITH_OPENEXR=OFF -DWITH_OPENJPEG=OFF -DWITH_JASPER=OFF -DWITH_GDAL=OFF -DWITH_GDCM=OFF \
+  -DWITH_PROTOBUF=OFF -DWITH_QUIRC=OFF -DWITH_ADE=OFF -DWITH_IMGCODEC_HDR=ON \
+  -DBUILD_ZLIB=OFF -DBUILD_JPEG=OFF -DBUILD_PNG=OFF -DBUILD_TIFF=OFF -DBUILD_WEBP=OFF \
+  -DBUILD_OPENJPEG=OFF -DBUILD_JASPER=OFF -DBUILD_OPENEXR=OFF -DBUILD_PROTOBUF=OFF \
+  -DBUILD_ITT=OFF -DBUILD_IPP_IW=OFF \
+  >"$SCRATCH/configure.log" 2>&1 \
+  || { tail -n 60 "$SCRATCH/configure.log"; echo "ERROR: OpenCV configure failed (log: $SCRATCH/configure.log)" >&2; exit 1; }
+grep -E 'To be built:|Disabled:|Unavailable:|lsd_advance' "$SCRATCH/configure.log" || true
+
+TARGETS=(opencv_lsd_advance opencv_test_lsd_advance)
+[ -n "$(ls "$REPO"/perf/*.cpp 2>/dev/null)" ] && TARGETS+=(opencv_perf_lsd_advance)
+for s in "$REPO"/samples/*.cpp; do
+  [ -f "$s" ] && TARGETS+=("example_lsd_advance_$(basename "$s" .cpp)")
+done
+
+section "build ${TARGETS[*]}"
+nice cmake --build "$BUILD" -j"$JOBS" --target "${TARGETS[@]}"
+
+if [ "$WITH_PYTHON" = 1 ]; then
+  section "build Python bindings (opencv_python3)"
+  nice cmake --build "$BUILD" -j"$JOBS" --target opencv_python3
+fi
+
+section "run in-tree opencv_test_lsd_advance"
+export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
+rc=0
+"$BUILD/bin/opencv_test_lsd_advance" || rc=$?
+if [ "$rc" -ne 0 ]; then
+  echo "ERROR: in-tree opencv_test_lsd_advance failed (exit $rc)" >&2
+  exit "$rc"
+fi
+
+if [ "$WITH_PYTHON" = 1 ]; then
+  section "Python import check"
+  PYTHONPATH="$BUILD/python_loader" LD_LIBRARY_PATH="$BUILD/lib" /usr/bin/python3 -c \
+    'import cv2; f = cv2.ximgproc.createLSDAdvance; print("cv2", cv2.__version__, "from", cv2.__file__, "->", f.__doc__.splitlines()[0] if f.__doc__ else f)'
+fi
+
+section "in-tree check passed"

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# This file is part of OpenCV project.
+# It is subject to the license terms in the LICENSE file found in the top-level directory
+# of this distribution and at http://opencv.org/license.html.
+#
+# Usage: bash scripts/test.sh
+#
+# Installs the Debian dependencies, fetches Debian's OpenCV source package of the installed
+# version (for OpenCV's test framework `ts`, which Debian does not package), builds the module
+# standalone with tests, runs every unit test of opencv_test_lsd_advance and a short perf smoke
+# run of opencv_perf_lsd_advance. Ends with the line `tests: N passed, M failed`; exits non-zero
+# on any failure.
+#
+# Environment:
+#   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)
+#   OPENCV_SOURCE_DIR      OpenCV source tree of the installed version (default:
+#                          ${XDG_CACHE_HOME:-~/.cache}/lsd_advance/opencv-<version>, fetched there)
+#   LSD_ADVANCE_DATA_DIR   test data directory, passed through to the tests
+#   LSD_ADVANCE_JOBS       parallel build jobs (default 2)
+#   GTEST_FILTER           the usual gtest filter, if a subset is wanted
+set -euo pipefail
+
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${LSD_ADVANCE_BUILD_DIR:-$REPO/build}"
+JOBS="${LSD_ADVANCE_JOBS:-2}"
+T0=$SECONDS
+section() { echo; echo "==== [test] $* ($((SECONDS - T0)) s)"; }
+
+section "dependencies"
+bash "$REPO/scripts/install_deps.sh"
+
+section "OpenCV source tree (for ts)"
+if [ -z "${OPENCV_SOURCE_DIR:-}" ]; then
+  OPENCV_SOURCE_DIR="$(bash "$REPO/scripts/fetch_opencv_source.sh" | tail -n1)"
+fi
+echo "OPENCV_SOURCE_DIR=$OPENCV_SOURCE_DIR"
+
+section "configure ($BUILD)"
+cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
+  -DBUILD_TESTS=ON -DBUILD_EXAMPLES=ON -DOPENCV_SOURCE_DIR="$OPENCV_SOURCE_DIR"
+
+section "build"
+cmake --build "$BUILD" -j"$JOBS"
+
+export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
+if [ -n "${LSD_ADVANCE_DATA_DIR:-}" ]; then
+  export LSD_ADVANCE_DATA_DIR
+  echo "LSD_ADVANCE_DATA_DIR=$LSD_ADVANCE_DATA_DIR"
+fi
+
+section "unit tests: opencv_test_lsd_advance"
+LOG="$BUILD/opencv_test_lsd_advance.log"
+test_rc=0
+( cd "$BUILD" && ./opencv_test_lsd_advance ) 2>&1 | tee "$LOG" || test_rc=${PIPESTATUS[0]}
+test_rc=${test_rc:-0}
+
+# gtest summary lines: "[  PASSED  ] N tests." / "[  FAILED  ] M tests, listed below:"
+passed="$(sed -nE 's/^\[  PASSED  \] ([0-9]+) tests?\..*/\1/p' "$LOG" | tail -n1)"
+failed="$(sed -nE 's/^\[  FAILED  \] ([0-9]+) tests?, listed below:.*/\1/p' "$LOG" | tail -n1)"
+skipped="$(sed -nE 's/^\[  SKIPPED \] ([0-9]+) tests?, listed below:.*/\1/p' "$LOG" | tail -n1)"
+passed="${passed:-0}"; failed="${failed:-0}"
+if [ "$test_rc" -ne 0 ] && [ "$failed" -eq 0 ]; then
+  echo "ERROR: opencv_test_lsd_advance exited with $test_rc without a gtest failure summary (crash?)" >&2
+  failed=1
+fi
+if [ "$test_rc" -eq 0 ] && [ "$passed" -eq 0 ] && [ "$failed" -eq 0 ]; then
+  echo "ERROR: opencv_test_lsd_advance ran no test" >&2
+  test_rc=1
+fi
+
+section "perf smoke run: opencv_perf_lsd_advance"
+perf_rc=0
+if [ -x "$BUILD/opencv_perf_lsd_advance" ]; then
+  ( cd "$BUILD" && ./opencv_perf_lsd_advance --perf_min_samples=1 --perf_force_samples=3 \
+      --perf_time_limit=1 --perf_max_deviation=1000 ) >"$BUILD/opencv_perf_lsd_advance.log" 2>&1 \
+    || perf_rc=$?
+  grep -E '^\[ *(RUN|OK|FAILED|PASSED) *\]|^\[=+\]' "$BUILD/opencv_perf_lsd_advance.log" | tail -n 40 || true
+  if [ "$perf_rc" -ne 0 ]; then
+    tail -n 60 "$BUILD/opencv_perf_lsd_advance.log"
+    echo "ERROR: opencv_perf_lsd_advance failed (exit $perf_rc); log: $BUILD/opencv_perf_lsd_advance.log" >&2
+  fi
+else
+  echo "ERROR: $BUILD/opencv_perf_lsd_advance was not built" >&2
+  perf_rc=1
+fi
+
+section "done"
+if [ -n "$skipped" ]; then
+  echo "tests: $passed passed, $failed failed, $skipped skipped"
+else
+  echo "tests: $passed passed, $failed failed"
+fi
+if [ "$test_rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$perf_rc" -ne 0 ]; then
+  exit 1
+fi

@@ -1,0 +1,291 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Structural precision/recall of line segments against ground truth, and data set loaders.
+
+#include "precomp.hpp"
+#include "opencv2/core/utils/filesystem.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace cv {
+namespace ximgproc {
+
+namespace {
+
+std::vector<Vec4f> toSegments(InputArray lines, const char* what)
+{
+    std::vector<Vec4f> segments;
+    if (lines.empty())
+        return segments;
+    const Mat m = lines.getMat();
+    if (m.type() != CV_32FC4 || (m.rows != 1 && m.cols != 1))
+        CV_Error_(Error::StsBadArg, ("%s must be an N x 1 or 1 x N CV_32FC4 array (std::vector<Vec4f>), got %s %dx%d",
+                                     what, typeToString(m.type()).c_str(), m.cols, m.rows));
+    m.reshape(4, (int)m.total()).copyTo(segments);
+    return segments;
+}
+
+// Length of the union of [lo, hi] intervals.
+double unionLength(std::vector<std::pair<double, double> >& intervals)
+{
+    std::sort(intervals.begin(), intervals.end());
+    double total = 0, end = -DBL_MAX;
+    for (const auto& iv : intervals)
+    {
+        const double lo = std::max(iv.first, end);
+        if (iv.second > lo)
+            total += iv.second - lo;
+        end = std::max(end, iv.second);
+    }
+    return total;
+}
+
+void checkParams(const StructuralMatchParams& p)
+{
+    const bool ok = std::isfinite(p.maxDistance) && p.maxDistance >= 0 && std::isfinite(p.maxAngle) &&
+                    p.maxAngle >= 0 && p.maxAngle <= 90 && p.minCoverage > 0 && p.minCoverage <= 1 &&
+                    std::isfinite(p.offset);
+    if (!ok)
+        CV_Error_(Error::StsOutOfRange,
+                  ("StructuralMatchParams: expected maxDistance >= 0, maxAngle in [0, 90] deg, minCoverage in (0, 1] "
+                   "and a finite offset; got %g, %g, %g, %g",
+                   p.maxDistance, p.maxAngle, p.minCoverage, p.offset));
+}
+
+std::vector<String> imagesIn(const String& folder)
+{
+    std::vector<String> paths;
+    for (const char* pattern : { "*.png", "*.jpg", "*.jpeg", "*.ppm", "*.pgm", "*.bmp" })
+    {
+        std::vector<String> found;
+        glob(utils::fs::join(folder, pattern), found, false);
+        paths.insert(paths.end(), found.begin(), found.end());
+    }
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
+
+// Rows of numbers of a text file; a leading "NAME:" token on a row is skipped.
+std::vector<std::vector<double> > readNumberRows(const String& path)
+{
+    std::ifstream in(path.c_str());
+    if (!in)
+        CV_Error_(Error::StsError, ("cannot open %s", path.c_str()));
+    std::vector<std::vector<double> > rows;
+    std::string line;
+    for (int lineNo = 1; std::getline(in, line); lineNo++)
+    {
+        const size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#')
+            continue;
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream tokens(line);
+        std::vector<double> row;
+        std::string token;
+        while (tokens >> token)
+        {
+            if (row.empty() && token.back() == ':')
+                continue;
+            char* end = nullptr;
+            const double v = std::strtod(token.c_str(), &end);
+            if (end == token.c_str() || *end != '\0')
+                CV_Error_(Error::StsParseError, ("%s:%d: '%s' is not a number", path.c_str(), lineNo, token.c_str()));
+            row.push_back(v);
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+Mat matrix3x4(const std::vector<double>& row, const String& path)
+{
+    if (row.size() != 12)
+        CV_Error_(Error::StsParseError, ("%s: expected 12 numbers per row (a 3x4 matrix), got %zu",
+                                         path.c_str(), row.size()));
+    return Mat(row, true).reshape(1, 3);
+}
+
+} // namespace
+
+StructuralScore evaluateStructural(InputArray detectionsIn, InputArray groundTruthIn,
+                                   const StructuralMatchParams& params)
+{
+    CV_INSTRUMENT_REGION();
+    checkParams(params);
+    std::vector<Vec4f> detections = toSegments(detectionsIn, "detections");
+    const std::vector<Vec4f> groundTruth = toSegments(groundTruthIn, "groundTruth");
+    const float offset = (float)params.offset;
+    for (Vec4f& d : detections)
+        d += Vec4f(offset, offset, offset, offset);
+
+    StructuralScore score;
+    std::vector<double> detectionLength(detections.size()), matched(detections.size(), 0.0);
+    for (size_t i = 0; i < detections.size(); i++)
+    {
+        detectionLength[i] = lsda::segmentLength(detections[i]);
+        score.detectedLength += detectionLength[i];
+    }
+
+    const double cosMaxAngle = std::cos(params.maxAngle * CV_PI / 180.0);
+    std::vector<std::pair<double, double> > intervals;
+    std::vector<std::pair<size_t, double> > clipped;  // (detection, clipped length) of one g
+    for (const Vec4f& g : groundTruth)
+    {
+        const double len = lsda::segmentLength(g);
+        if (len <= 0)
+            continue;
+        score.groundTruthCount++;
+        score.groundTruthLength += len;
+        const Point2d origin(g[0], g[1]), dir = Point2d(g[2] - g[0], g[3] - g[1]) * (1.0 / len);
+        intervals.clear();
+        clipped.clear();
+        for (size_t i = 0; i < detections.size(); i++)
+        {
+            const Vec4f& d = detections[i];
+            if (detectionLength[i] <= 0)
+                continue;
+            const Point2d a(d[0], d[1]), b(d[2], d[3]);
+            const Point2d centre = (a + b) * 0.5;
+            if (std::abs(dir.cross(centre - origin)) > params.maxDistance)
+                continue;
+            if (std::abs(dir.dot(b - a)) < cosMaxAngle * detectionLength[i])
+                continue;
+            double lo = dir.dot(a - origin), hi = dir.dot(b - origin);
+            if (lo > hi)
+                std::swap(lo, hi);
+            lo = std::max(lo, 0.0);
+            hi = std::min(hi, len);
+            if (hi <= lo)
+                continue;
+            intervals.push_back(std::make_pair(lo, hi));
+            clipped.push_back(std::make_pair(i, hi - lo));
+        }
+        const double covered = unionLength(intervals);
+        if (covered < params.minCoverage * len)
+            continue;
+        score.found++;
+        score.coveredLength += covered;
+        for (const auto& c : clipped)
+            matched[c.first] += c.second;
+    }
+    for (size_t i = 0; i < detections.size(); i++)
+        score.matchedLength += std::min(matched[i], detectionLength[i]);
+    score.precision = score.detectedLength > 0 ? score.matchedLength / score.detectedLength : 0.0;
+    score.recall = score.groundTruthLength > 0 ? score.coveredLength / score.groundTruthLength : 0.0;
+    return score;
+}
+
+double fScore(double averagePrecision, double averageRecall)
+{
+    const double sum = averagePrecision + averageRecall;
+    return sum > 0 ? 2.0 * averagePrecision * averageRecall / sum : 0.0;
+}
+
+double longSegmentShare(InputArray linesIn, double minLength)
+{
+    const std::vector<Vec4f> lines = toSegments(linesIn, "lines");
+    if (lines.empty())
+        return 0.0;
+    size_t longOnes = 0;
+    for (const Vec4f& l : lines)
+        longOnes += lsda::segmentLength(l) >= minLength;
+    return (double)longOnes / (double)lines.size();
+}
+
+std::vector<Vec4f> readSegments(const String& path)
+{
+    std::vector<Vec4f> segments;
+    for (const std::vector<double>& row : readNumberRows(path))
+    {
+        if (row.size() != 4)
+            CV_Error_(Error::StsParseError, ("%s: expected 4 numbers (x1 y1 x2 y2) per row, got %zu",
+                                             path.c_str(), row.size()));
+        segments.push_back(Vec4f((float)row[0], (float)row[1], (float)row[2], (float)row[3]));
+    }
+    return segments;
+}
+
+void writeSegments(const String& path, InputArray linesIn)
+{
+    const std::vector<Vec4f> lines = toSegments(linesIn, "lines");
+    std::ofstream out(path.c_str());
+    if (!out)
+        CV_Error_(Error::StsError, ("cannot write %s", path.c_str()));
+    for (const Vec4f& l : lines)
+        out << format("%.3f %.3f %.3f %.3f\n", l[0], l[1], l[2], l[3]);
+    if (!out)
+        CV_Error_(Error::StsError, ("error while writing %s", path.c_str()));
+}
+
+std::vector<LabelledImage> loadYorkUrban(const String& folder)
+{
+    const String imageDir = utils::fs::join(folder, "images"), gtDir = utils::fs::join(folder, "gt");
+    if (!utils::fs::isDirectory(imageDir) || !utils::fs::isDirectory(gtDir))
+        CV_Error_(Error::StsError, ("%s is not a YorkUrban folder: expected images/ and gt/ in it", folder.c_str()));
+    std::vector<String> names;
+    const String list = utils::fs::join(folder, "list.txt");
+    if (utils::fs::exists(list))
+    {
+        std::ifstream in(list.c_str());
+        std::string name;
+        while (in >> name)
+            names.push_back(name);
+    }
+    else
+        for (const String& path : imagesIn(imageDir))
+        {
+            const size_t slash = path.find_last_of("/\\"), dot = path.find_last_of('.');
+            names.push_back(path.substr(slash + 1, dot - slash - 1));
+        }
+    std::vector<LabelledImage> images;
+    for (const String& name : names)
+    {
+        LabelledImage item;
+        item.imagePath = utils::fs::join(imageDir, name + ".jpg");
+        if (!utils::fs::exists(item.imagePath))
+            CV_Error_(Error::StsError, ("missing image %s", item.imagePath.c_str()));
+        item.groundTruth = readSegments(utils::fs::join(gtDir, name + "_gt.txt"));
+        images.push_back(item);
+    }
+    return images;
+}
+
+SequenceData loadSequence(const String& folder)
+{
+    SequenceData data;
+    for (const char* sub : { "image_l", "image_0", "cam0/data", "" })
+    {
+        const String dir = *sub ? utils::fs::join(folder, sub) : folder;
+        if (utils::fs::isDirectory(dir))
+            data.imagePaths = imagesIn(dir);
+        if (!data.imagePaths.empty())
+            break;
+    }
+    if (data.imagePaths.empty())
+        CV_Error_(Error::StsError, ("no image in %s (looked in image_l/, image_0/, cam0/data/ and the folder itself)",
+                                    folder.c_str()));
+    const String calib = utils::fs::join(folder, "calib.txt");
+    if (utils::fs::exists(calib))
+    {
+        const std::vector<std::vector<double> > rows = readNumberRows(calib);
+        if (rows.size() >= 1)
+            data.P0 = matrix3x4(rows[0], calib);
+        if (rows.size() >= 2)
+            data.P1 = matrix3x4(rows[1], calib);
+    }
+    const String poses = utils::fs::join(folder, "poses.txt");
+    if (utils::fs::exists(poses))
+    {
+        for (const std::vector<double>& row : readNumberRows(poses))
+            data.poses.push_back(matrix3x4(row, poses));
+        if (data.poses.size() != data.imagePaths.size())
+            CV_Error_(Error::StsError, ("%s has %zu poses for %zu images", poses.c_str(), data.poses.size(),
+                                        data.imagePaths.size()));
+    }
+    return data;
+}
+
+}} // namespace cv::ximgproc
