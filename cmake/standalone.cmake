@@ -27,14 +27,16 @@ set(CMAKE_CXX_STANDARD 11)
 set(CMAKE_CXX_STANDARD_REQUIRED ON)
 set(CMAKE_CXX_EXTENSIONS OFF)
 
+set(_lsda_required core imgproc imgcodecs ximgproc)
+set(_lsda_optional line_descriptor highgui videoio)
 if(BUILD_TESTS)
   # ts itself needs highgui and videoio
-  set(_lsda_required core imgproc imgcodecs ximgproc highgui videoio)
-  set(_lsda_optional line_descriptor)
-else()
-  set(_lsda_required core imgproc imgcodecs ximgproc)
-  set(_lsda_optional line_descriptor highgui videoio)
+  list(APPEND _lsda_required highgui videoio)
+elseif(BUILD_EXAMPLES)
+  # lsd_advance_detect reads videos
+  list(APPEND _lsda_required videoio)
 endif()
+list(REMOVE_ITEM _lsda_optional ${_lsda_required})
 find_package(OpenCV 4.5.4 REQUIRED
   COMPONENTS ${_lsda_required}
   OPTIONAL_COMPONENTS ${_lsda_optional})

@@ -28,7 +28,8 @@ struct LineMethod
 //! Names accepted by makeLineMethod, for help texts.
 inline const char* lineMethodNames()
 {
-    return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base";
+    return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, "
+           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking";
 }
 
 inline LineMethod lineMethodOf(const std::string& name,
@@ -104,10 +105,14 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
     if (name == "lsdadvance")
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        // Algorithm::save() nests the parameters under the algorithm's name; write() does not.
+        const FileNode named = params.empty() ? FileNode() : params[detector->getDefaultName()];
         if (!params.empty())
-            detector->read(params);
+            detector->read(named.empty() ? params : named);
         return lineMethodOf("LSDAdvance", detector);
     }
+    if (!params.empty())
+        CV_Error_(Error::StsBadArg, ("parameters apply to the lsdadvance method only, not to '%s'", name.c_str()));
     if (name == "lsdadvance_paper")
         return lineMethodOf("LSDAdvance (paper)", paperLSDAdvance());
     if (name == "lsdadvance_filter")
@@ -116,6 +121,15 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
         detector->setMergeStrategy(ximgproc::LSDAdvance::MERGE_NONE);
         return lineMethodOf("LSDAdvance (paper, length filter only)", detector);
     }
+    // The length filter's sequence modes, everything else at the defaults.
+    if (name == "lsdadvance_alpha1")
+        return lineMethodOf("LSDAdvance, alpha = 1", ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_ADAPTIVE));
+    if (name == "lsdadvance_continuous")
+        return lineMethodOf("LSDAdvance, continuous inter-frame rule",
+                            ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS));
+    if (name == "lsdadvance_tracking")
+        return lineMethodOf("LSDAdvance, count tracking",
+                            ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_COUNT_TRACKING));
     if (name == "lsdadvance_base")
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE);

@@ -188,7 +188,7 @@ int main(int argc, char** argv)
         "{dataset  | yorkurban  | yorkurban (structural precision/recall) or sequence (counts over frames) }"
         "{data     |            | data folder: YorkUrban layout (images/, gt/) or a sequence (image_l/, cam0/data/ or images) }"
         "{methods  | lsd,fld,fld_merge,edlines,plvins,lsdadvance | comma-separated methods }"
-        "{params   |            | YAML/XML of LSDAdvance parameters (write()) for the lsdadvance method }"
+        "{params   |            | YAML/XML of LSDAdvance parameters (write() or save()) for the lsdadvance method }"
         "{subset   | all        | yorkurban images to use: all, even or odd (by index in list.txt) }"
         "{repeats  | 1          | detections per image for the time (median) }"
         "{threads  | 1          | cv::setNumThreads for the whole run (times in the tables are one core by default) }"
@@ -223,7 +223,7 @@ int main(int argc, char** argv)
     }
     std::vector<LineMethod> methods;
     for (const std::string& name : splitList(parser.get<std::string>("methods")))
-        methods.push_back(makeLineMethod(name, params.isOpened() ? params.root() : FileNode()));
+        methods.push_back(makeLineMethod(name, params.isOpened() && name == "lsdadvance" ? params.root() : FileNode()));
 
     Table table;
     if (dataset == "yorkurban")

@@ -6,7 +6,8 @@
 // folder), prints segments per image, the share of long segments and the median time of each,
 // and writes both results for the (first) image side by side.
 
-#include <opencv2/lsd_advance.hpp>
+#include "line_methods.hpp"
+
 #include <opencv2/core/utility.hpp>
 #include <opencv2/core/utils/filesystem.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -87,7 +88,7 @@ int main(int argc, char** argv)
         "{help h   |                      | print this help }"
         "{image i  | building.jpg         | input image (found with cv::samples::findFile), or a folder of .jpg/.png images }"
         "{output o | lsd_advance_demo.png | side-by-side picture of the (first) image: LSD left, LSDAdvance right }"
-        "{params p |                      | optional YAML/XML file of LSDAdvance parameters saved with write() }"
+        "{params p |                      | optional YAML/XML file of LSDAdvance parameters saved with write() or save() }"
         "{repeats  | 11                   | detections per method and image; the median time is used }"
         "{long     | 60                   | length in pixels from which a segment counts as long }";
     CommandLineParser parser(argc, argv, keys);
@@ -127,18 +128,15 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
-    Ptr<ximgproc::LSDAdvance> advance = ximgproc::createLSDAdvance();
-    if (!paramsPath.empty())
+    FileStorage params;
+    if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))
     {
-        FileStorage fs(paramsPath, FileStorage::READ);
-        if (!fs.isOpened())
-        {
-            std::cerr << "Cannot open " << paramsPath << std::endl;
-            return 1;
-        }
-        advance->read(fs.root());
+        std::cerr << "Cannot open " << paramsPath << std::endl;
+        return 1;
     }
+    const LineMethod lsd = makeLineMethod("lsd");
+    const LineMethod advance = makeLineMethod("lsdadvance", params.isOpened() ? params.root() : FileNode());
+    Ptr<LineSegmentDetector> drawer = createLineSegmentDetector();
 
     Totals lsdTotals, advanceTotals;
     std::vector<double> ratios;
@@ -150,11 +148,11 @@ int main(int argc, char** argv)
             std::cerr << "Cannot read " << paths[k] << std::endl;
             return 1;
         }
-        const Run lsdRun = timeDetection([&](std::vector<Vec4f>& lines) { lsd->detect(gray, lines); }, repeats);
+        const Run lsdRun = timeDetection([&](std::vector<Vec4f>& lines) { lsd.detect(gray, lines); }, repeats);
         // Every image is independent, not the next frame of a sequence.
         const Run advanceRun = timeDetection([&](std::vector<Vec4f>& lines) {
-            advance->reset();
-            advance->detect(gray, lines);
+            advance.reset();
+            advance.detect(gray, lines);
         }, repeats);
         lsdTotals.add(lsdRun, longLength);
         advanceTotals.add(advanceRun, longLength);
@@ -163,8 +161,8 @@ int main(int argc, char** argv)
         if (k == 0)
         {
             Mat sideBySide;
-            hconcat(panel(lsd, gray, lsdRun.lines, format("LSD: %zu segments", lsdRun.lines.size())),
-                    panel(lsd, gray, advanceRun.lines, format("LSDAdvance: %zu segments", advanceRun.lines.size())),
+            hconcat(panel(drawer, gray, lsdRun.lines, format("LSD: %zu segments", lsdRun.lines.size())),
+                    panel(drawer, gray, advanceRun.lines, format("LSDAdvance: %zu segments", advanceRun.lines.size())),
                     sideBySide);
             if (!imwrite(outputPath, sideBySide))
             {

@@ -3,11 +3,11 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Chooses LSDAdvance's open thresholds by measurement: a grid over the base detector set-up,
-// the merge strategy, the stage order, endpointDistance, mergeThreshold, proximityRatio and
-// maxPerpendicularOffset, scored with the structural F on one half of YorkUrban (even or odd
+// the length threshold rule, the merge strategy, the stage order, endpointDistance,
+// mergeThreshold, proximityRatio and maxPerpendicularOffset, scored with the structural F on one half of YorkUrban (even or odd
 // images), then the best setting and the defaults checked on the other half.
 // Base segments are detected once per image and set-up; LSDAdvance::processSegments runs the
-// other stages, so the whole grid takes about a minute.
+// other stages, so the whole grid takes a few minutes.
 
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -35,7 +35,7 @@ const BaseSetup kBases[] = { { "LSD default (STD, 0.8)", LSD_REFINE_STD, 0.8 },
 
 struct Setting
 {
-    int base, strategy, order;
+    int base, threshold, strategy, order;
     double endpointDistance, mergeThreshold, proximityRatio, maxOffset;
 };
 
@@ -50,6 +50,7 @@ typedef std::vector<std::vector<std::vector<Vec4f> > > BaseSegments;
 Ptr<LSDAdvance> detectorFor(const Setting& s)
 {
     Ptr<LSDAdvance> d = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, s.endpointDistance, s.mergeThreshold);
+    d->setLengthThreshold(s.threshold);
     d->setMergeStrategy(s.strategy);
     d->setStageOrder(s.order);
     d->setProximityRatio(s.proximityRatio);
@@ -82,6 +83,11 @@ const char* strategyName(int s)
     return s == LSDAdvance::MERGE_BASELINES ? "baselines" : s == LSDAdvance::MERGE_LONGEST_FIRST ? "longest first" : "none";
 }
 
+const char* thresholdName(int t)
+{
+    return t == LSDAdvance::LENGTH_THRESHOLD_PAPER ? "paper" : "capped";
+}
+
 const char* orderName(int o)
 {
     return o == LSDAdvance::FILTER_THEN_MERGE ? "filter, merge" : "merge, filter";
@@ -89,9 +95,9 @@ const char* orderName(int o)
 
 void printRow(const Setting& s, const Score& tune, const Score* check)
 {
-    std::printf("| %s | %s | %s | %g | %g | %g | %g | %.3f | %.3f | %.3f | %.0f |", kBases[s.base].name,
-                strategyName(s.strategy), orderName(s.order), s.endpointDistance, s.mergeThreshold,
-                s.proximityRatio, s.maxOffset, tune.ap, tune.ar, tune.f, tune.segments);
+    std::printf("| %s | %s | %s | %s | %g | %g | %g | %g | %.3f | %.3f | %.3f | %.0f |", kBases[s.base].name,
+                thresholdName(s.threshold), strategyName(s.strategy), orderName(s.order), s.endpointDistance,
+                s.mergeThreshold, s.proximityRatio, s.maxOffset, tune.ap, tune.ar, tune.f, tune.segments);
     if (check)
         std::printf(" %.3f | %.3f | %.3f |", check->ap, check->ar, check->f);
     std::printf("\n");
@@ -135,14 +141,15 @@ int main(int argc, char** argv)
 
     std::vector<std::pair<Score, Setting> > results;
     for (int b = 0; b < (int)base.size(); b++)
+        for (int threshold : { (int)LSDAdvance::LENGTH_THRESHOLD_PAPER, (int)LSDAdvance::LENGTH_THRESHOLD_CAPPED })
         for (int strategy : { (int)LSDAdvance::MERGE_BASELINES, (int)LSDAdvance::MERGE_LONGEST_FIRST })
             for (int order : { (int)LSDAdvance::FILTER_THEN_MERGE, (int)LSDAdvance::MERGE_THEN_FILTER })
                 for (double distance : { 5.0, 10.0, 15.0 })
-                    for (double threshold : { 0.5, 0.6, 0.7 })
+                    for (double mergeThreshold : { 0.5, 0.6, 0.7 })
                         for (double ratio : { 0.1, 0.4, 1.0, 2.0 })
                             for (double offset : { 1.0, 1.5, 2.0 })
                             {
-                                const Setting s = { b, strategy, order, distance, threshold, ratio, offset };
+                                const Setting s = { b, threshold, strategy, order, distance, mergeThreshold, ratio, offset };
                                 results.push_back(std::make_pair(evaluate(detectorFor(s), base[b], images, tuneSet), s));
                                 std::cerr << "\r[sweep] setting " << results.size() << std::flush;
                             }
@@ -154,9 +161,9 @@ int main(int argc, char** argv)
     std::printf("Grid of %zu settings, tuned on the %s images (%zu), checked on the others (%zu); length filter "
                 "with alpha = 1 (LENGTH_FILTER_ADAPTIVE), angle bins 10 deg with neighbours, weights 0.4/0.35/0.2.\n\n",
                 results.size(), tuneEven ? "even" : "odd", tuneSet.size(), checkSet.size());
-    std::printf("| base | merge | order | endpointDistance | mergeThreshold | proximityRatio | maxPerpendicularOffset "
+    std::printf("| base | length threshold | merge | order | endpointDistance | mergeThreshold | proximityRatio | maxPerpendicularOffset "
                 "| AP (tune) | AR (tune) | F (tune) | segments | AP (check) | AR (check) | F (check) |\n");
-    std::printf("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int i = 0; i < std::min(top, (int)results.size()); i++)
     {
         const Setting& s = results[i].second;
@@ -164,9 +171,14 @@ int main(int argc, char** argv)
         printRow(s, results[i].first, &check);
     }
 
-    // The paper's configuration within the grid, and OpenCV's LSD, on both halves.
+    // The defaults, the paper's configuration and the base detectors alone, on both halves.
     std::printf("\nReferences on both halves (tune / check):\n\n");
-    const Setting paper = { 0, LSDAdvance::MERGE_BASELINES, LSDAdvance::FILTER_THEN_MERGE, 10, 0.6, 0.1, 1.5 };
+    const Setting paper = { 0, LSDAdvance::LENGTH_THRESHOLD_PAPER, LSDAdvance::MERGE_BASELINES, LSDAdvance::FILTER_THEN_MERGE, 10, 0.6, 0.1, 1.5 };
+    Ptr<LSDAdvance> defaults = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
+    const int defaultBase = defaults->getLsdRefine() == LSD_REFINE_NONE ? 1 : 0;
+    std::printf("- the defaults (%s base): F %.3f / %.3f\n", kBases[defaultBase].name,
+                evaluate(defaults, base[defaultBase], images, tuneSet).f,
+                evaluate(defaults, base[defaultBase], images, checkSet).f);
     const Score paperTune = evaluate(detectorFor(paper), base[0], images, tuneSet);
     const Score paperCheck = evaluate(detectorFor(paper), base[0], images, checkSet);
     std::printf("- paper's stages on OpenCV's default LSD: F %.3f / %.3f\n", paperTune.f, paperCheck.f);

@@ -68,8 +68,8 @@ std::vector<String> imagesIn(const String& folder)
     return paths;
 }
 
-// Rows of numbers of a text file; a leading "NAME:" token on a row is skipped.
-std::vector<std::vector<double> > readNumberRows(const String& path)
+// Rows of finite numbers of a text file; with labelled, a leading "NAME:" token on a row is skipped.
+std::vector<std::vector<double> > readNumberRows(const String& path, bool labelled)
 {
     std::ifstream in(path.c_str());
     if (!in)
@@ -87,12 +87,12 @@ std::vector<std::vector<double> > readNumberRows(const String& path)
         std::string token;
         while (tokens >> token)
         {
-            if (row.empty() && token.back() == ':')
+            if (labelled && row.empty() && token.back() == ':')
                 continue;
             char* end = nullptr;
             const double v = std::strtod(token.c_str(), &end);
-            if (end == token.c_str() || *end != '\0')
-                CV_Error_(Error::StsParseError, ("%s:%d: '%s' is not a number", path.c_str(), lineNo, token.c_str()));
+            if (end == token.c_str() || *end != '\0' || !std::isfinite(v))
+                CV_Error_(Error::StsParseError, ("%s:%d: '%s' is not a finite number", path.c_str(), lineNo, token.c_str()));
             row.push_back(v);
         }
         rows.push_back(row);
@@ -198,7 +198,7 @@ double longSegmentShare(InputArray linesIn, double minLength)
 std::vector<Vec4f> readSegments(const String& path)
 {
     std::vector<Vec4f> segments;
-    for (const std::vector<double>& row : readNumberRows(path))
+    for (const std::vector<double>& row : readNumberRows(path, false))
     {
         if (row.size() != 4)
             CV_Error_(Error::StsParseError, ("%s: expected 4 numbers (x1 y1 x2 y2) per row, got %zu",
@@ -235,11 +235,16 @@ std::vector<LabelledImage> loadYorkUrban(const String& folder)
             names.push_back(name);
     }
     else
-        for (const String& path : imagesIn(imageDir))
+    {
+        std::vector<String> jpegs;  // the loader opens NAME.jpg: list only those
+        glob(utils::fs::join(imageDir, "*.jpg"), jpegs, false);
+        std::sort(jpegs.begin(), jpegs.end());
+        for (const String& path : jpegs)
         {
             const size_t slash = path.find_last_of("/\\"), dot = path.find_last_of('.');
             names.push_back(path.substr(slash + 1, dot - slash - 1));
         }
+    }
     std::vector<LabelledImage> images;
     for (const String& name : names)
     {
@@ -270,7 +275,7 @@ SequenceData loadSequence(const String& folder)
     const String calib = utils::fs::join(folder, "calib.txt");
     if (utils::fs::exists(calib))
     {
-        const std::vector<std::vector<double> > rows = readNumberRows(calib);
+        const std::vector<std::vector<double> > rows = readNumberRows(calib, true);
         if (rows.size() >= 1)
             data.P0 = matrix3x4(rows[0], calib);
         if (rows.size() >= 2)
@@ -279,7 +284,7 @@ SequenceData loadSequence(const String& folder)
     const String poses = utils::fs::join(folder, "poses.txt");
     if (utils::fs::exists(poses))
     {
-        for (const std::vector<double>& row : readNumberRows(poses))
+        for (const std::vector<double>& row : readNumberRows(poses, false))
             data.poses.push_back(matrix3x4(row, poses));
         if (data.poses.size() != data.imagePaths.size())
             CV_Error_(Error::StsError, ("%s has %zu poses for %zu images", poses.c_str(), data.poses.size(),

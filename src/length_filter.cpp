@@ -29,6 +29,40 @@ double interFrameAlpha(int keptPrevious, int keptBeforePrevious)
     return std::min(1.0 + 0.1 * (r - 0.1), 1.2);
 }
 
+double continuousInterFrameAlpha(int keptPrevious, int keptBeforePrevious)
+{
+    CV_CheckGE(keptPrevious, 0, "segment counts are not negative");
+    CV_CheckGE(keptBeforePrevious, 0, "segment counts are not negative");
+    if (keptBeforePrevious == 0)
+        return 1.0;
+    const double r = (double)(keptPrevious - keptBeforePrevious) / keptBeforePrevious;
+    if (r < -0.1)
+        return std::max(1.0 + 0.2 * (r + 0.1), 0.8);
+    if (r <= 0.1)
+        return 1.0;
+    return std::min(1.0 + 0.1 * (r - 0.1), 1.2);
+}
+
+double countTrackingAlpha(int provisional, int keptPrevious, int keptBeforePrevious)
+{
+    CV_CheckGE(provisional, 0, "segment counts are not negative");
+    CV_CheckGE(keptPrevious, 0, "segment counts are not negative");
+    CV_CheckGE(keptBeforePrevious, 0, "segment counts are not negative");
+    const double recent = 0.5 * (keptPrevious + keptBeforePrevious);
+    if (recent <= 0)
+        return 1.0;
+    const double r = (provisional - recent) / recent;
+    return std::min(std::max(1.0 + 0.5 * r, 0.8), 1.2);
+}
+
+int countAtLeast(const std::vector<Vec4f>& segments, double minLength)
+{
+    int count = 0;
+    for (const Vec4f& s : segments)
+        count += segmentLength(s) >= minLength;
+    return count;
+}
+
 double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, LengthThreshold rule)
 {
     if (segments.empty())

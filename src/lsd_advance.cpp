@@ -133,8 +133,9 @@ public:
 
     void setLengthFilterMode(int v) CV_OVERRIDE
     {
-        assignEnum(lengthFilterMode, v, "lengthFilterMode", LENGTH_FILTER_NONE, LENGTH_FILTER_INTERFRAME,
-                   "LENGTH_FILTER_NONE, LENGTH_FILTER_ADAPTIVE, LENGTH_FILTER_INTERFRAME");
+        assignEnum(lengthFilterMode, v, "lengthFilterMode", LENGTH_FILTER_NONE, LENGTH_FILTER_COUNT_TRACKING,
+                   "LENGTH_FILTER_NONE, LENGTH_FILTER_ADAPTIVE, LENGTH_FILTER_INTERFRAME, "
+                   "LENGTH_FILTER_INTERFRAME_CONTINUOUS, LENGTH_FILTER_COUNT_TRACKING");
         reset();
     }
     int getLengthFilterMode() const CV_OVERRIDE { return lengthFilterMode; }
@@ -253,27 +254,23 @@ private:
         stats.baseMs = baseMs;
 
         // The threshold always comes from the base segments: after merging, the lengths are
-        // no longer those of one detector's output.
-        int64 t = getTickCount();
-        if (lengthFilterMode != LENGTH_FILTER_NONE)
-        {
-            stats.alpha = lengthFilterMode == LENGTH_FILTER_INTERFRAME && framesSeen >= 2
-                              ? lsda::interFrameAlpha(keptCounts[0], keptCounts[1])
-                              : 1.0;
-            stats.minLength = lsda::adaptiveMinLength(base, stats.alpha, lengthThreshold);
-        }
+        // no longer those of one detector's output. Every rule is proportional to alpha.
+        const int64 t = getTickCount();
+        const double unitMinLength = lengthFilterMode == LENGTH_FILTER_NONE
+                                         ? 0.0
+                                         : lsda::adaptiveMinLength(base, 1.0, lengthThreshold);
         stats.filterMs = elapsedMs(t);
 
         std::vector<Vec4f> work, out;
         if (stageOrder == FILTER_THEN_MERGE)
         {
-            filterStage(base, stats, work);
+            filterStage(base, unitMinLength, stats, work);
             mergeStage(work, stats, out);
         }
         else
         {
             mergeStage(base, stats, work);
-            filterStage(work, stats, out);
+            filterStage(work, unitMinLength, stats, out);
         }
         keptCounts[1] = keptCounts[0];
         keptCounts[0] = stats.filteredSegments;
@@ -284,13 +281,36 @@ private:
         lastStats = stats;
     }
 
-    void filterStage(std::vector<Vec4f>& in, LSDAdvanceStats& stats, std::vector<Vec4f>& kept) const
+    // alpha of this frame; the kept counts of the two previous frames are keptCounts.
+    double frameAlpha(const std::vector<Vec4f>& in, double unitMinLength) const
+    {
+        if (framesSeen < 2)
+            return 1.0;
+        switch (lengthFilterMode)
+        {
+        case LENGTH_FILTER_INTERFRAME:
+            return lsda::interFrameAlpha(keptCounts[0], keptCounts[1]);
+        case LENGTH_FILTER_INTERFRAME_CONTINUOUS:
+            return lsda::continuousInterFrameAlpha(keptCounts[0], keptCounts[1]);
+        case LENGTH_FILTER_COUNT_TRACKING:
+            return lsda::countTrackingAlpha(lsda::countAtLeast(in, unitMinLength), keptCounts[0], keptCounts[1]);
+        default:
+            return 1.0;
+        }
+    }
+
+    void filterStage(std::vector<Vec4f>& in, double unitMinLength, LSDAdvanceStats& stats,
+                     std::vector<Vec4f>& kept) const
     {
         const int64 t = getTickCount();
         if (lengthFilterMode == LENGTH_FILTER_NONE)
             kept.swap(in);
         else
+        {
+            stats.alpha = frameAlpha(in, unitMinLength);
+            stats.minLength = stats.alpha * unitMinLength;
             lsda::dropShortSegments(in, stats.minLength, kept);
+        }
         stats.filteredSegments = (int)kept.size();
         stats.filterMs += elapsedMs(t);
     }

@@ -41,8 +41,18 @@ CV_EXPORTS Ptr<LineSegmentDetector> createBaseLsd(const LsdParams& params);
 
 CV_EXPORTS double segmentLength(const Vec4f& segment);
 
-//! The paper's inter-frame factor from the kept counts of frames k-1 and k-2.
+//! The paper's inter-frame factor from the kept counts of frames k-1 and k-2 (jumps at r = -0.1).
 CV_EXPORTS double interFrameAlpha(int keptPrevious, int keptBeforePrevious);
+
+//! The same rule made continuous at r = -0.1: 1 + 0.2 (r + 0.1) below, floored at 0.8.
+CV_EXPORTS double continuousInterFrameAlpha(int keptPrevious, int keptBeforePrevious);
+
+//! Count tracking: clamp(1 + 0.5 r, 0.8, 1.2) with r the relative difference between the count
+//! this frame keeps with alpha = 1 and the mean kept count of frames k-1 and k-2 (1 when that is 0).
+CV_EXPORTS double countTrackingAlpha(int provisional, int keptPrevious, int keptBeforePrevious);
+
+//! Number of segments at least minLength long.
+CV_EXPORTS int countAtLeast(const std::vector<Vec4f>& segments, double minLength);
 
 enum class LengthThreshold
 {

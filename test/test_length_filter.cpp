@@ -138,4 +138,36 @@ TEST(LSDAdvance_InterFrameAlpha, stays_in_its_documented_range_for_all_ratios)
     }
 }
 
+TEST(LSDAdvance_InterFrameAlpha, continuous_rule_has_no_jump_at_minus_ten_percent)
+{
+    EXPECT_EQ(1.0, lsda::continuousInterFrameAlpha(90, 100));
+    EXPECT_NEAR(1.0 - 0.2 * 0.01, lsda::continuousInterFrameAlpha(89, 100), 1e-12);
+    EXPECT_NEAR(1.0 - 0.2 * 0.4, lsda::continuousInterFrameAlpha(50, 100), 1e-12);
+    EXPECT_NEAR(0.82, lsda::continuousInterFrameAlpha(0, 100), 1e-12);
+    EXPECT_EQ(lsda::interFrameAlpha(150, 100), lsda::continuousInterFrameAlpha(150, 100));
+    EXPECT_EQ(1.0, lsda::continuousInterFrameAlpha(7, 0));
+    for (int previous = 0; previous <= 400; previous++)
+    {
+        SCOPED_TRACE(previous);
+        EXPECT_LE(lsda::continuousInterFrameAlpha(previous, 100), lsda::continuousInterFrameAlpha(previous + 1, 100));
+    }
+}
+
+TEST(LSDAdvance_InterFrameAlpha, count_tracking_opposes_the_frame_own_deviation)
+{
+    // Recent mean 100: 120 provisional -> r = 0.2 -> 1.1; 90 -> 0.95; far off -> clamped.
+    EXPECT_NEAR(1.1, lsda::countTrackingAlpha(120, 110, 90), 1e-12);
+    EXPECT_NEAR(0.95, lsda::countTrackingAlpha(90, 100, 100), 1e-12);
+    EXPECT_NEAR(1.2, lsda::countTrackingAlpha(500, 100, 100), 1e-12);
+    EXPECT_NEAR(0.8, lsda::countTrackingAlpha(0, 100, 100), 1e-12);
+    EXPECT_EQ(1.0, lsda::countTrackingAlpha(100, 100, 100));
+    EXPECT_EQ(1.0, lsda::countTrackingAlpha(50, 0, 0));
+}
+
+TEST(LSDAdvance_LengthFilter, countAtLeast_counts_segments_not_shorter_than_the_length)
+{
+    EXPECT_EQ(3, lsda::countAtLeast(segmentsOfLengths({ 5, 12, 12.5, 40 }), 12.0));
+    EXPECT_EQ(0, lsda::countAtLeast(std::vector<Vec4f>(), 1.0));
+}
+
 }} // namespace

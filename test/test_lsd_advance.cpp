@@ -314,7 +314,7 @@ TEST(LSDAdvance_Detect, building_gives_fewer_and_longer_segments_than_LSD)
     const std::vector<Vec4f> lsd = detectLsd(img);
     const std::vector<Vec4f> ours = detectLines(createLSDAdvance(), img);
     EXPECT_LT(ours.size(), lsd.size());
-    EXPECT_GT(longSegmentShare(ours), longSegmentShare(lsd));
+    EXPECT_GT(longSegmentShare(ours, 60.0), longSegmentShare(lsd, 60.0));
 }
 
 TEST(LSDAdvance_Detect, same_result_with_one_and_all_threads)
@@ -446,6 +446,35 @@ TEST(LSDAdvance_Sequence, count_changing_parameters_reset_the_sequence_and_other
     alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 2));
     detector->setMergeThreshold(0.7);
     EXPECT_NE(1.0, alphasOf(detector, { frames[2] })[0]);
+}
+
+TEST(LSDAdvance_Sequence, each_interframe_mode_uses_its_rule)
+{
+    const std::vector<Mat> frames = changingFrames();
+    Ptr<LSDAdvance> continuous = createLSDAdvance(LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS);
+    std::vector<int> kept;
+    std::vector<double> alphas = alphasOf(continuous, frames, &kept);
+    for (size_t k = 2; k < frames.size(); k++)
+    {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(lsda::continuousInterFrameAlpha(kept[k - 1], kept[k - 2]), alphas[k]);
+    }
+
+    // Count tracking compares this frame's count at alpha = 1 with the two previous kept counts.
+    Ptr<LSDAdvance> tracking = createLSDAdvance(LSDAdvance::LENGTH_FILTER_COUNT_TRACKING);
+    Ptr<LSDAdvance> unit = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
+    kept.clear();
+    alphas = alphasOf(tracking, frames, &kept);
+    EXPECT_EQ(1.0, alphas[0]);
+    EXPECT_EQ(1.0, alphas[1]);
+    for (size_t k = 2; k < frames.size(); k++)
+    {
+        SCOPED_TRACE(k);
+        detectLines(unit, frames[k]);
+        const int provisional = unit->getLastStats().filteredSegments;
+        EXPECT_EQ(lsda::countTrackingAlpha(provisional, kept[k - 1], kept[k - 2]), alphas[k]);
+        EXPECT_NE(1.0, alphas[k]);
+    }
 }
 
 TEST(LSDAdvance_Sequence, adaptive_mode_ignores_previous_frames)

@@ -17,17 +17,6 @@
 namespace opencv_test {
 using namespace cv::ximgproc;
 
-//! Share of segments at least minLength pixels long (0 for none).
-inline double longSegmentShare(const std::vector<Vec4f>& lines, double minLength = 60.0)
-{
-    if (lines.empty())
-        return 0.0;
-    size_t longOnes = 0;
-    for (const Vec4f& l : lines)
-        longOnes += lsda::segmentLength(l) >= minLength;
-    return (double)longOnes / (double)lines.size();
-}
-
 //! Undirected angle of a segment in degrees, in [0, 180).
 inline double undirectedAngle(const Vec4f& s)
 {
