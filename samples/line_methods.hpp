@@ -8,10 +8,12 @@
 #ifndef OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
 #define OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/lsd_advance.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -24,6 +26,34 @@ struct LineMethod
     //! Starts a new sequence (no-op for detectors without sequence state).
     std::function<void()> reset;
 };
+
+//! Median of the values (the upper one of the two middle values for an even count); 0 for none.
+inline double median(std::vector<double> values)
+{
+    if (values.empty())
+        return 0.0;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
+
+//! Median time in ms of `repeats` detections on one image; lines of the last one. With
+//! independent, the sequence is reset before each detection (outside the timed call).
+inline double timedDetect(const LineMethod& method, const cv::Mat& gray, int repeats,
+                          std::vector<cv::Vec4f>& lines, bool independent)
+{
+    std::vector<double> ms;
+    for (int r = 0; r < repeats; r++)
+    {
+        if (independent)
+            method.reset();
+        cv::TickMeter tm;
+        tm.start();
+        method.detect(gray, lines);
+        tm.stop();
+        ms.push_back(tm.getTimeMilli());
+    }
+    return median(ms);
+}
 
 //! Names accepted by makeLineMethod, for help texts.
 inline const char* lineMethodNames()

@@ -26,14 +26,6 @@ using namespace cv::ximgproc;
 
 namespace {
 
-double median(std::vector<double> v)
-{
-    if (v.empty())
-        return 0.0;
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 void meanStd(const std::vector<double>& v, double& mean, double& stddev)
 {
     Scalar m, s;
@@ -51,24 +43,6 @@ std::vector<std::string> splitList(const std::string& list)
         if (!item.empty())
             items.push_back(item);
     return items;
-}
-
-// Median time of `repeats` detections; lines of the last one.
-double timedDetect(const LineMethod& method, const Mat& gray, int repeats, std::vector<Vec4f>& lines,
-                   bool independent)
-{
-    std::vector<double> ms;
-    for (int r = 0; r < repeats; r++)
-    {
-        if (independent)
-            method.reset();
-        TickMeter tm;
-        tm.start();
-        method.detect(gray, lines);
-        tm.stop();
-        ms.push_back(tm.getTimeMilli());
-    }
-    return median(ms);
 }
 
 struct Table

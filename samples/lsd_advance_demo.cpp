@@ -21,46 +21,17 @@ using namespace cv;
 
 namespace {
 
-double median(std::vector<double> values)
-{
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-    return values[values.size() / 2];
-}
-
-struct Run
-{
-    std::vector<Vec4f> lines;
-    double medianMs;
-};
-
-Run timeDetection(const std::function<void(std::vector<Vec4f>&)>& detect, int repeats)
-{
-    Run run;
-    std::vector<double> ms;
-    for (int i = 0; i < repeats; i++)
-    {
-        TickMeter tm;
-        tm.start();
-        detect(run.lines);
-        tm.stop();
-        ms.push_back(tm.getTimeMilli());
-    }
-    run.medianMs = median(ms);
-    return run;
-}
-
 // Segment counts, long segments and per-image median times of one method over all images.
 struct Totals
 {
     size_t segments = 0, longSegments = 0;
     std::vector<double> ms;
 
-    void add(const Run& run, double longLength)
+    void add(const std::vector<Vec4f>& lines, double medianMs, double longLength)
     {
-        segments += run.lines.size();
-        for (const Vec4f& l : run.lines)
-            longSegments += std::hypot(l[2] - l[0], l[3] - l[1]) >= longLength;
-        ms.push_back(run.medianMs);
+        segments += lines.size();
+        longSegments += (size_t)cvRound(ximgproc::longSegmentShare(lines, longLength) * (double)lines.size());
+        ms.push_back(medianMs);
     }
     void print(const char* name, size_t images) const
     {
@@ -86,7 +57,7 @@ int main(int argc, char** argv)
 {
     const String keys =
         "{help h   |                      | print this help }"
-        "{image i  | building.jpg         | input image (found with cv::samples::findFile), or a folder of .jpg/.png images }"
+        "{image i  | building.jpg         | input image (found with cv::samples::findFile), or a folder of images }"
         "{output o | lsd_advance_demo.png | side-by-side picture of the (first) image: LSD left, LSDAdvance right }"
         "{params p |                      | optional YAML/XML file of LSDAdvance parameters saved with write() or save() }"
         "{repeats  | 11                   | detections per method and image; the median time is used }"
@@ -109,24 +80,9 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    std::vector<String> paths;
-    if (utils::fs::isDirectory(input))
-    {
-        for (const char* pattern : { "/*.jpg", "/*.png" })
-        {
-            std::vector<String> found;
-            glob(input + pattern, found, false);
-            paths.insert(paths.end(), found.begin(), found.end());
-        }
-        std::sort(paths.begin(), paths.end());
-    }
-    else
-        paths.push_back(samples::findFile(input));
-    if (paths.empty())
-    {
-        std::cerr << "No .jpg or .png image in " << input << std::endl;
-        return 1;
-    }
+    // A folder is read like a sequence folder (its images in name order), one image per file.
+    const std::vector<String> paths = utils::fs::isDirectory(input) ? ximgproc::loadSequence(input).imagePaths
+                                                                   : std::vector<String>(1, samples::findFile(input));
 
     FileStorage params;
     if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))
@@ -148,21 +104,19 @@ int main(int argc, char** argv)
             std::cerr << "Cannot read " << paths[k] << std::endl;
             return 1;
         }
-        const Run lsdRun = timeDetection([&](std::vector<Vec4f>& lines) { lsd.detect(gray, lines); }, repeats);
         // Every image is independent, not the next frame of a sequence.
-        const Run advanceRun = timeDetection([&](std::vector<Vec4f>& lines) {
-            advance.reset();
-            advance.detect(gray, lines);
-        }, repeats);
-        lsdTotals.add(lsdRun, longLength);
-        advanceTotals.add(advanceRun, longLength);
-        ratios.push_back(advanceRun.medianMs / lsdRun.medianMs);
+        std::vector<Vec4f> lsdLines, advanceLines;
+        const double lsdMs = timedDetect(lsd, gray, repeats, lsdLines, true);
+        const double advanceMs = timedDetect(advance, gray, repeats, advanceLines, true);
+        lsdTotals.add(lsdLines, lsdMs, longLength);
+        advanceTotals.add(advanceLines, advanceMs, longLength);
+        ratios.push_back(advanceMs / lsdMs);
 
         if (k == 0)
         {
             Mat sideBySide;
-            hconcat(panel(drawer, gray, lsdRun.lines, format("LSD: %zu segments", lsdRun.lines.size())),
-                    panel(drawer, gray, advanceRun.lines, format("LSDAdvance: %zu segments", advanceRun.lines.size())),
+            hconcat(panel(drawer, gray, lsdLines, format("LSD: %zu segments", lsdLines.size())),
+                    panel(drawer, gray, advanceLines, format("LSDAdvance: %zu segments", advanceLines.size())),
                     sideBySide);
             if (!imwrite(outputPath, sideBySide))
             {

@@ -26,32 +26,12 @@ using namespace cv;
 
 namespace {
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // File name without folder and extension.
 std::string stemOf(const std::string& path)
 {
     const size_t slash = path.find_last_of("/\\");
     const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
     return name.substr(0, name.rfind('.'));
-}
-
-bool isImageName(const std::string& path)
-{
-    const size_t dot = path.rfind('.');
-    if (dot == std::string::npos)
-        return false;
-    std::string ext = path.substr(dot + 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return (char)std::tolower(c); });
-    for (const char* known : { "png", "jpg", "jpeg", "ppm", "pgm", "bmp" })
-        if (ext == known)
-            return true;
-    return false;
 }
 
 // The gray images to detect on, one after the other: an image file, the images of a folder
@@ -65,16 +45,7 @@ public:
         // Finds sample names such as building.jpg; keeps what it cannot find (video URLs, patterns).
         const String path = samples::findFileOrKeep(input, true);
         if (utils::fs::isDirectory(path))
-        {
-            std::vector<String> files;
-            glob(utils::fs::join(path, "*"), files, false);
-            for (const String& f : files)
-                if (isImageName(f))
-                    paths_.push_back(f);
-            std::sort(paths_.begin(), paths_.end());
-            if (paths_.empty())
-                throw std::runtime_error("no png, jpg, jpeg, ppm, pgm or bmp image in " + path);
-        }
+            paths_ = ximgproc::loadSequence(path).imagePaths;  // name order; throws when there is none
         else if (utils::fs::exists(path) && haveImageReader(path))
         {
             paths_.push_back(path);

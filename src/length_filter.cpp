@@ -15,13 +15,21 @@ double segmentLength(const Vec4f& s)
     return std::hypot((double)s[2] - s[0], (double)s[3] - s[1]);
 }
 
-double interFrameAlpha(int keptPrevious, int keptBeforePrevious)
+namespace {
+
+// r = (N(k-1) - N(k-2)) / N(k-2), 0 when N(k-2) = 0.
+double countChange(int keptPrevious, int keptBeforePrevious)
 {
     CV_CheckGE(keptPrevious, 0, "segment counts are not negative");
     CV_CheckGE(keptBeforePrevious, 0, "segment counts are not negative");
-    if (keptBeforePrevious == 0)
-        return 1.0;
-    const double r = (double)(keptPrevious - keptBeforePrevious) / keptBeforePrevious;
+    return keptBeforePrevious == 0 ? 0.0 : (double)(keptPrevious - keptBeforePrevious) / keptBeforePrevious;
+}
+
+} // namespace
+
+double interFrameAlpha(int keptPrevious, int keptBeforePrevious)
+{
+    const double r = countChange(keptPrevious, keptBeforePrevious);
     if (r < -0.1)
         return 1.0 - 0.2 * (1.0 + r);
     if (r <= 0.1)
@@ -31,16 +39,10 @@ double interFrameAlpha(int keptPrevious, int keptBeforePrevious)
 
 double continuousInterFrameAlpha(int keptPrevious, int keptBeforePrevious)
 {
-    CV_CheckGE(keptPrevious, 0, "segment counts are not negative");
-    CV_CheckGE(keptBeforePrevious, 0, "segment counts are not negative");
-    if (keptBeforePrevious == 0)
-        return 1.0;
-    const double r = (double)(keptPrevious - keptBeforePrevious) / keptBeforePrevious;
+    const double r = countChange(keptPrevious, keptBeforePrevious);
     if (r < -0.1)
         return std::max(1.0 + 0.2 * (r + 0.1), 0.8);
-    if (r <= 0.1)
-        return 1.0;
-    return std::min(1.0 + 0.1 * (r - 0.1), 1.2);
+    return interFrameAlpha(keptPrevious, keptBeforePrevious);
 }
 
 double countTrackingAlpha(int provisional, int keptPrevious, int keptBeforePrevious)

@@ -268,4 +268,35 @@ TEST(LSDAdvance_Parameters, grouping_and_merging_parameters_change_the_output)
     }
 }
 
+TEST(LSDAdvance_Parameters, user_workflow_set_every_parameter_save_load_and_detect)
+{
+    // What the module issue asks of a user program: every setter, a FileStorage file, detect().
+    Ptr<LSDAdvance> configured = createLSDAdvance();
+    for (const RealParameter& p : realParameters())
+        ((*configured).*p.set)(p.defaultValue);
+    for (const IntParameter& p : intParameters())
+        ((*configured).*p.set)(p.defaultValue);
+    const String path = cv::tempfile(".yml");
+    configured->save(path);  // the parameters under a node named getDefaultName()
+    Ptr<LSDAdvance> loaded = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE, 3.0, 0.9);
+    {
+        FileStorage fs(path, FileStorage::READ);
+        ASSERT_TRUE(fs.isOpened());
+        loaded->read(fs[loaded->getDefaultName()]);
+    }
+    std::remove(path.c_str());
+    for (const RealParameter& p : realParameters())
+        EXPECT_EQ(p.defaultValue, ((*loaded).*p.get)()) << p.name;
+    for (const IntParameter& p : intParameters())
+        EXPECT_EQ(p.defaultValue, ((*loaded).*p.get)()) << p.name;
+
+    const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    ASSERT_FALSE(img.empty());
+    std::vector<Vec4f> ours, lsd;
+    loaded->detect(img, ours);
+    createLineSegmentDetector()->detect(img, lsd);
+    EXPECT_LT(ours.size(), lsd.size());
+    EXPECT_GT(longSegmentShare(ours, 60.0), longSegmentShare(lsd, 60.0));
+}
+
 }} // namespace
