@@ -15,19 +15,6 @@ namespace ximgproc {
 
 namespace {
 
-std::vector<Vec4f> toSegments(InputArray lines, const char* what)
-{
-    std::vector<Vec4f> segments;
-    if (lines.empty())
-        return segments;
-    const Mat m = lines.getMat();
-    if (m.type() != CV_32FC4 || (m.rows != 1 && m.cols != 1))
-        CV_Error_(Error::StsBadArg, ("%s must be an N x 1 or 1 x N CV_32FC4 array (std::vector<Vec4f>), got %s %dx%d",
-                                     what, typeToString(m.type()).c_str(), m.cols, m.rows));
-    m.reshape(4, (int)m.total()).copyTo(segments);
-    return segments;
-}
-
 // Length of the union of [lo, hi] intervals.
 double unionLength(std::vector<std::pair<double, double> >& intervals)
 {
@@ -115,8 +102,8 @@ StructuralScore evaluateStructural(InputArray detectionsIn, InputArray groundTru
 {
     CV_INSTRUMENT_REGION();
     checkParams(params);
-    std::vector<Vec4f> detections = toSegments(detectionsIn, "detections");
-    const std::vector<Vec4f> groundTruth = toSegments(groundTruthIn, "groundTruth");
+    std::vector<Vec4f> detections = lsda::toSegments(detectionsIn, "detections");
+    const std::vector<Vec4f> groundTruth = lsda::toSegments(groundTruthIn, "groundTruth");
     const float offset = (float)params.offset;
     for (Vec4f& d : detections)
         d += Vec4f(offset, offset, offset, offset);
@@ -186,7 +173,7 @@ double fScore(double averagePrecision, double averageRecall)
 
 double longSegmentShare(InputArray linesIn, double minLength)
 {
-    const std::vector<Vec4f> lines = toSegments(linesIn, "lines");
+    const std::vector<Vec4f> lines = lsda::toSegments(linesIn, "lines");
     if (lines.empty())
         return 0.0;
     size_t longOnes = 0;
@@ -210,7 +197,7 @@ std::vector<Vec4f> readSegments(const String& path)
 
 void writeSegments(const String& path, InputArray linesIn)
 {
-    const std::vector<Vec4f> lines = toSegments(linesIn, "lines");
+    const std::vector<Vec4f> lines = lsda::toSegments(linesIn, "lines");
     std::ofstream out(path.c_str());
     if (!out)
         CV_Error_(Error::StsError, ("cannot write %s", path.c_str()));

@@ -13,6 +13,10 @@ namespace ximgproc {
 
 namespace {
 
+// Larger coordinates are not image coordinates; bounding them keeps the grouping grid's cells
+// within 32 bits.
+constexpr double kMaxCoordinate = 1e7;
+
 // The valid range of a parameter; the bounds are excluded where loOpen / hiOpen.
 struct ParamRange
 {
@@ -24,22 +28,22 @@ struct ParamRange
     const char* unit;
 };
 
-const ParamRange kLsdScale = { "lsdScale", 0, true, 1, false, "" };
-const ParamRange kLsdSigmaScale = { "lsdSigmaScale", 0, true, 100, false, "" };
-const ParamRange kLsdQuant = { "lsdQuant", 0, false, 255, false, "" };
-const ParamRange kLsdAngleTolerance = { "lsdAngleTolerance", 0, true, 180, true, " deg" };
-const ParamRange kLsdLogEps = { "lsdLogEps", -1000, false, 1000, false, "" };
-const ParamRange kLsdDensityThreshold = { "lsdDensityThreshold", 0, false, 1, true, "" };
-const ParamRange kLsdNumBins = { "lsdNumBins", 1, false, 65536, false, "" };
-const ParamRange kAngleBinWidth = { "angleBinWidth", 1, false, 90, false, " deg" };
-const ParamRange kEndpointDistance = { "endpointDistance", 0.1, false, 200, false, " px" };
-const ParamRange kBaselineRatio = { "baselineRatio", 0, true, 1, false, "" };
-const ParamRange kDirectionWeight = { "directionWeight", 0, false, 1, false, "" };
-const ParamRange kProximityWeight = { "proximityWeight", 0, false, 1, false, "" };
-const ParamRange kLengthWeight = { "lengthWeight", 0, false, 1, false, "" };
-const ParamRange kProximityRatio = { "proximityRatio", 0, true, 10, false, "" };
-const ParamRange kMergeThreshold = { "mergeThreshold", 0, false, 1, false, "" };
-const ParamRange kMaxPerpendicularOffset = { "maxPerpendicularOffset", 0, false, 100, false, " px" };
+constexpr ParamRange kLsdScale = { "lsdScale", 0, true, 1, false, "" };
+constexpr ParamRange kLsdSigmaScale = { "lsdSigmaScale", 0, true, 100, false, "" };
+constexpr ParamRange kLsdQuant = { "lsdQuant", 0, false, 255, false, "" };
+constexpr ParamRange kLsdAngleTolerance = { "lsdAngleTolerance", 0, true, 180, true, " deg" };
+constexpr ParamRange kLsdLogEps = { "lsdLogEps", -1000, false, 1000, false, "" };
+constexpr ParamRange kLsdDensityThreshold = { "lsdDensityThreshold", 0, false, 1, true, "" };
+constexpr ParamRange kLsdNumBins = { "lsdNumBins", 1, false, 65536, false, "" };
+constexpr ParamRange kAngleBinWidth = { "angleBinWidth", 1, false, 90, false, " deg" };
+constexpr ParamRange kEndpointDistance = { "endpointDistance", 0.1, false, 200, false, " px" };
+constexpr ParamRange kBaselineRatio = { "baselineRatio", 0, true, 1, false, "" };
+constexpr ParamRange kDirectionWeight = { "directionWeight", 0, false, 1, false, "" };
+constexpr ParamRange kProximityWeight = { "proximityWeight", 0, false, 1, false, "" };
+constexpr ParamRange kLengthWeight = { "lengthWeight", 0, false, 1, false, "" };
+constexpr ParamRange kProximityRatio = { "proximityRatio", 0, true, 10, false, "" };
+constexpr ParamRange kMergeThreshold = { "mergeThreshold", 0, false, 1, false, "" };
+constexpr ParamRange kMaxPerpendicularOffset = { "maxPerpendicularOffset", 0, false, 100, false, " px" };
 
 // Validates value against its range (finite, inside the bounds) and stores it.
 template <typename T>
@@ -87,17 +91,11 @@ public:
     void processSegments(InputArray segments, OutputArray lines) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        std::vector<Vec4f> base;
-        if (!segments.empty())
-        {
-            const Mat m = segments.getMat();
-            if (m.type() != CV_32FC4 || (m.rows != 1 && m.cols != 1))
-                CV_Error_(Error::StsBadArg,
-                          ("LSDAdvance::processSegments: expected N x 1 or 1 x N CV_32FC4 segments "
-                           "(std::vector<Vec4f>), got %s %dx%d",
-                           typeToString(m.type()).c_str(), m.cols, m.rows));
-            m.reshape(4, (int)m.total()).copyTo(base);
-        }
+        std::vector<Vec4f> base = lsda::toSegments(segments, "LSDAdvance::processSegments: segments");
+        if (!checkRange(Mat(base), true, nullptr, -kMaxCoordinate, kMaxCoordinate))
+            CV_Error_(Error::StsOutOfRange,
+                      ("LSDAdvance::processSegments: segment coordinates must be finite and within "
+                       "[-%g, %g] px", kMaxCoordinate, kMaxCoordinate));
         runStages(base, 0.0, lines);
     }
 
@@ -156,6 +154,7 @@ public:
         assignEnum(strategy, v, "mergeStrategy", MERGE_NONE, MERGE_LONGEST_FIRST,
                    "MERGE_NONE, MERGE_BASELINES, MERGE_LONGEST_FIRST");
         merging.strategy = (lsda::MergeStrategy)strategy;
+        reset();
     }
     int getMergeStrategy() const CV_OVERRIDE { return (int)merging.strategy; }
     void setStageOrder(int v) CV_OVERRIDE
@@ -166,7 +165,7 @@ public:
     }
     int getStageOrder() const CV_OVERRIDE { return stageOrder; }
 
-    void setAngleBinWidth(double v) CV_OVERRIDE { assign(grouping.angleBinWidth, v, kAngleBinWidth); }
+    void setAngleBinWidth(double v) CV_OVERRIDE { assign(grouping.angleBinWidth, v, kAngleBinWidth); reset(); }
     double getAngleBinWidth() const CV_OVERRIDE { return grouping.angleBinWidth; }
     void setAngleBinning(int v) CV_OVERRIDE
     {
@@ -174,27 +173,28 @@ public:
         assignEnum(binning, v, "angleBinning", ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS,
                    "ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS");
         grouping.neighbourBins = binning == ANGLE_BINS_NEIGHBOURS;
+        reset();
     }
     int getAngleBinning() const CV_OVERRIDE
     {
         return grouping.neighbourBins ? ANGLE_BINS_NEIGHBOURS : ANGLE_BINS_STRICT;
     }
-    void setEndpointDistance(double v) CV_OVERRIDE { assign(grouping.endpointDistance, v, kEndpointDistance); }
+    void setEndpointDistance(double v) CV_OVERRIDE { assign(grouping.endpointDistance, v, kEndpointDistance); reset(); }
     double getEndpointDistance() const CV_OVERRIDE { return grouping.endpointDistance; }
 
-    void setBaselineRatio(double v) CV_OVERRIDE { assign(merging.baselineRatio, v, kBaselineRatio); }
+    void setBaselineRatio(double v) CV_OVERRIDE { assign(merging.baselineRatio, v, kBaselineRatio); reset(); }
     double getBaselineRatio() const CV_OVERRIDE { return merging.baselineRatio; }
-    void setDirectionWeight(double v) CV_OVERRIDE { assign(merging.directionWeight, v, kDirectionWeight); }
+    void setDirectionWeight(double v) CV_OVERRIDE { assign(merging.directionWeight, v, kDirectionWeight); reset(); }
     double getDirectionWeight() const CV_OVERRIDE { return merging.directionWeight; }
-    void setProximityWeight(double v) CV_OVERRIDE { assign(merging.proximityWeight, v, kProximityWeight); }
+    void setProximityWeight(double v) CV_OVERRIDE { assign(merging.proximityWeight, v, kProximityWeight); reset(); }
     double getProximityWeight() const CV_OVERRIDE { return merging.proximityWeight; }
-    void setLengthWeight(double v) CV_OVERRIDE { assign(merging.lengthWeight, v, kLengthWeight); }
+    void setLengthWeight(double v) CV_OVERRIDE { assign(merging.lengthWeight, v, kLengthWeight); reset(); }
     double getLengthWeight() const CV_OVERRIDE { return merging.lengthWeight; }
-    void setProximityRatio(double v) CV_OVERRIDE { assign(merging.proximityRatio, v, kProximityRatio); }
+    void setProximityRatio(double v) CV_OVERRIDE { assign(merging.proximityRatio, v, kProximityRatio); reset(); }
     double getProximityRatio() const CV_OVERRIDE { return merging.proximityRatio; }
-    void setMergeThreshold(double v) CV_OVERRIDE { assign(merging.mergeThreshold, v, kMergeThreshold); }
+    void setMergeThreshold(double v) CV_OVERRIDE { assign(merging.mergeThreshold, v, kMergeThreshold); reset(); }
     double getMergeThreshold() const CV_OVERRIDE { return merging.mergeThreshold; }
-    void setMaxPerpendicularOffset(double v) CV_OVERRIDE { assign(merging.maxPerpendicularOffset, v, kMaxPerpendicularOffset); }
+    void setMaxPerpendicularOffset(double v) CV_OVERRIDE { assign(merging.maxPerpendicularOffset, v, kMaxPerpendicularOffset); reset(); }
     double getMaxPerpendicularOffset() const CV_OVERRIDE { return merging.maxPerpendicularOffset; }
 
     void write(FileStorage& fs) const CV_OVERRIDE
@@ -207,6 +207,18 @@ public:
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
+    {
+        // Validity does not depend on other parameters: checking every value on a scratch object
+        // first means a bad file throws before this object changes.
+        LSDAdvanceImpl scratch;
+        scratch.apply(fn);
+        apply(fn);
+    }
+
+    String getDefaultName() const CV_OVERRIDE { return "LSDAdvance"; }
+
+private:
+    void apply(const FileNode& fn)
     {
         for (const IntParam& p : intParams())
         {
@@ -229,9 +241,6 @@ public:
         }
     }
 
-    String getDefaultName() const CV_OVERRIDE { return "LSDAdvance"; }
-
-private:
     struct IntParam
     {
         const char* name;
@@ -245,7 +254,6 @@ private:
         void (LSDAdvanceImpl::*set)(double);
     };
 
-    // The persisted parameters: one table drives write() and read().
     // Stages 1-3 in the configured order on the base segments; fills lastStats.
     void runStages(std::vector<Vec4f>& base, double baseMs, OutputArray lines)
     {
@@ -272,12 +280,12 @@ private:
             mergeStage(base, stats, work);
             filterStage(work, unitMinLength, stats, out);
         }
+        stats.outputSegments = (int)out.size();
+        Mat(out).copyTo(lines);
+        // The frame counts only once its output is delivered.
         keptCounts[1] = keptCounts[0];
         keptCounts[0] = stats.filteredSegments;
         framesSeen = std::min(framesSeen + 1, 2);
-
-        stats.outputSegments = (int)out.size();
-        Mat(out).copyTo(lines);
         lastStats = stats;
     }
 
@@ -336,6 +344,7 @@ private:
         stats.mergingMs = elapsedMs(t);
     }
 
+    // The persisted parameters: one table drives write() and read().
     static const std::vector<IntParam>& intParams()
     {
         static const std::vector<IntParam> params = {

@@ -72,9 +72,11 @@ struct CellEntry
     }
 };
 
-int64 cellKey(const Point& cell)
+// Cells fit in 32 bits: coordinates are finite and bounded (checked by the caller), and the
+// cell size is at least 0.1 px.
+int64 cellKey(int64 cx, int64 cy)
 {
-    return ((int64)cell.x << 32) | (int64)(uint32_t)cell.y;
+    return (int64)(((uint64)(uint32_t)cx << 32) | (uint64)(uint32_t)cy);
 }
 
 } // namespace
@@ -92,7 +94,8 @@ int angleBin(const Vec4f& s, double binWidth)
 void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
                    SegmentGroups& groups)
 {
-    CV_Assert(params.angleBinWidth > 0 && params.endpointDistance > 0);
+    CV_CheckGT(params.angleBinWidth, 0.0, "angle bins have a width");
+    CV_CheckGE(params.endpointDistance, 0.1, "grid cells are at least 0.1 px");
     const int n = (int)segments.size();
     const int bins = binCount(params.angleBinWidth);
     const double cellSize = params.endpointDistance;
@@ -107,12 +110,15 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         return (e & 1) ? Point2d(s[2], s[3]) : Point2d(s[0], s[1]);
     };
     auto cellOf = [&](const Point2d& p) {
-        return Point(cvFloor(p.x / cellSize), cvFloor(p.y / cellSize));
+        return std::make_pair((int64)std::floor(p.x / cellSize), (int64)std::floor(p.y / cellSize));
     };
 
     std::vector<CellEntry> grid(2 * (size_t)n);
     for (int e = 0; e < 2 * n; e++)
-        grid[e] = { cellKey(cellOf(endpoint(e))), e };
+    {
+        const std::pair<int64, int64> c = cellOf(endpoint(e));
+        grid[e] = { cellKey(c.first, c.second), e };
+    }
     std::sort(grid.begin(), grid.end());
 
     DisjointSets sets(n);
@@ -120,11 +126,11 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
     {
         const int seg = e >> 1;
         const Point2d p = endpoint(e);
-        const Point c = cellOf(p);
+        const std::pair<int64, int64> c = cellOf(p);
         for (int dy = -1; dy <= 1; dy++)
             for (int dx = -1; dx <= 1; dx++)
             {
-                const CellEntry first = { cellKey(c + Point(dx, dy)), 0 };
+                const CellEntry first = { cellKey(c.first + dx, c.second + dy), 0 };
                 for (auto it = std::lower_bound(grid.begin(), grid.end(), first);
                      it != grid.end() && it->cell == first.cell; ++it)
                 {

@@ -46,13 +46,17 @@ struct Candidate
     int baseline;  // index into the group's members
 };
 
-// Whether seg may fuse into base: inside the perpendicular gate and scoring at least the
-// threshold (the score is returned).
+// Whether seg may fuse into base: inside the perpendicular gate, closer than Dth, and scoring
+// at least the threshold (the score is returned). Without the distance condition, direction and
+// length alone (0.6 with the paper's weights) would join collinear pieces any distance apart.
 bool passes(const Vec4f& base, const Vec4f& seg, const MergeParams& params, double& score)
 {
     if (perpendicularOffset(base, seg) > params.maxPerpendicularOffset)
         return false;
-    score = similarityScore(similarityTerms(base, seg, params.proximityRatio), params);
+    const SimilarityTerms terms = similarityTerms(base, seg, params.proximityRatio);
+    if (terms.proximity <= 0)
+        return false;
+    score = similarityScore(terms, params);
     return score >= params.mergeThreshold;
 }
 
@@ -180,7 +184,8 @@ SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& other, doubl
 {
     const double lb = segmentLength(baseline), lo = segmentLength(other);
     SimilarityTerms t;
-    t.direction = std::max(unitDirection(baseline).dot(unitDirection(other)), 0.0);
+    // A point has no direction: it must not score as if it pointed along the baseline.
+    t.direction = lb > 0 && lo > 0 ? std::max(unitDirection(baseline).dot(unitDirection(other)), 0.0) : 0.0;
     const double threshold = proximityRatio * 0.5 * (lb + lo);
     const double dmin = segmentDistance(baseline, other);
     t.proximity = threshold > 0 ? std::max(1.0 - dmin / threshold, 0.0) : (dmin > 0 ? 0.0 : 1.0);

@@ -37,6 +37,10 @@ CV_EXPORTS Mat toGray8U(InputArray image);
 
 CV_EXPORTS Ptr<LineSegmentDetector> createBaseLsd(const LsdParams& params);
 
+//! Segments of an N x 1 or 1 x N CV_32FC4 array (empty for an empty one); throws on any other
+//! layout, naming `what` in the message.
+CV_EXPORTS std::vector<Vec4f> toSegments(InputArray lines, const char* what);
+
 //--- stage 1: adaptive length suppression (length_filter.cpp)
 
 CV_EXPORTS double segmentLength(const Vec4f& segment);

@@ -255,6 +255,25 @@ TEST(LSDAdvance_Detect, processSegments_runs_the_stages_on_given_segments)
     EXPECT_THROW(fromSegments->processSegments(Mat(3, 4, CV_32FC1), lines), cv::Exception);
 }
 
+TEST(LSDAdvance_Detect, processSegments_rejects_non_finite_and_huge_coordinates)
+{
+    std::vector<Vec4f> segments(50, Vec4f(10, 10, 80, 12));
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    const float bad[] = { std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(), 1e30f };
+    for (float v : bad)
+    {
+        SCOPED_TRACE(v);
+        std::vector<Vec4f> withBad = segments;
+        withBad[7][2] = v;
+        EXPECT_THROW(detector->processSegments(withBad, lines), cv::Exception);
+    }
+    // Still usable, and the rejected calls did not count as frames.
+    detector->processSegments(segments, lines);
+    EXPECT_FALSE(lines.empty());
+    EXPECT_EQ(1.0, detector->getLastStats().alpha);
+}
+
 TEST(LSDAdvance_Detect, length_filter_none_keeps_every_segment)
 {
     const Mat img = clutterImage(3);
@@ -429,23 +448,26 @@ TEST(LSDAdvance_Sequence, replay_after_reset_gives_identical_lines)
         EXPECT_EQ(first[k], detectLines(detector, frames[k])) << "frame " << k;
 }
 
-TEST(LSDAdvance_Sequence, count_changing_parameters_reset_the_sequence_and_others_do_not)
+TEST(LSDAdvance_Sequence, every_setter_resets_the_sequence)
 {
+    // Every parameter can change the kept counts (merging runs before the filter by default).
     const std::vector<Mat> frames = changingFrames();
+    const std::vector<std::function<void(LSDAdvance&)> > setters = {
+        [](LSDAdvance& d) { d.setLsdScale(1.0); },
+        [](LSDAdvance& d) { d.setLengthFilterMode(LSDAdvance::LENGTH_FILTER_INTERFRAME); },
+        [](LSDAdvance& d) { d.setMergeThreshold(0.6); },
+        [](LSDAdvance& d) { d.setEndpointDistance(10.0); },
+    };
     Ptr<LSDAdvance> detector = createLSDAdvance();
-    alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 2));
-    detector->setLsdScale(0.8);
-    EXPECT_EQ(1.0, alphasOf(detector, { frames[2] })[0]);
-
-    detector->reset();
-    alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 2));
-    detector->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_INTERFRAME);
-    EXPECT_EQ(1.0, alphasOf(detector, { frames[2] })[0]);
-
-    detector->reset();
-    alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 2));
-    detector->setMergeThreshold(0.7);
-    EXPECT_NE(1.0, alphasOf(detector, { frames[2] })[0]);
+    ASSERT_NE(1.0, alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 3))[2]);
+    for (size_t i = 0; i < setters.size(); i++)
+    {
+        SCOPED_TRACE(i);
+        detector->reset();
+        alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 2));
+        setters[i](*detector);
+        EXPECT_EQ(1.0, alphasOf(detector, { frames[2] })[0]);
+    }
 }
 
 TEST(LSDAdvance_Sequence, each_interframe_mode_uses_its_rule)

@@ -278,6 +278,24 @@ TEST(LSDAdvance_MergingLongestFirst, fused_segment_keeps_the_longest_piece_orien
     expectSegmentNear(Vec4f(300, 0, 45, 0), merged[0], 1e-3);
 }
 
+TEST(LSDAdvance_MergingLongestFirst, pieces_farther_apart_than_Dth_never_fuse)
+{
+    // Direction and length alone score 0.4 + 0.2 = 0.6: without the distance condition, two
+    // equal collinear pieces 45 px apart would fuse. A parallel segment 5 px off chains them
+    // into one group.
+    lsda::MergeParams params = longestFirstParams();
+    const std::vector<Vec4f> segments = { Vec4f(0, 0, 50, 0), Vec4f(95, 0, 145, 0), Vec4f(45, 5, 100, 5) };
+    ASSERT_GE(params.directionWeight + params.lengthWeight, params.mergeThreshold);
+    const std::vector<Vec4f> merged = groupAndMerge(segments, params);
+    EXPECT_EQ(3u, merged.size());
+}
+
+TEST(LSDAdvance_Similarity, a_point_has_no_direction)
+{
+    EXPECT_EQ(0.0, lsda::similarityTerms(Vec4f(0, 0, 100, 0), Vec4f(105, 0, 105, 0), 0.1).direction);
+    EXPECT_EQ(0.0, lsda::similarityTerms(Vec4f(5, 5, 5, 5), Vec4f(0, 0, 100, 0), 0.1).direction);
+}
+
 TEST(LSDAdvance_MergingNone, returns_every_segment_unchanged)
 {
     lsda::MergeParams params;

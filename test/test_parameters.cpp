@@ -200,6 +200,17 @@ TEST(LSDAdvance_Parameters, read_rejects_wrong_types_and_out_of_range_values)
     }
 }
 
+TEST(LSDAdvance_Parameters, a_rejected_file_leaves_every_parameter_unchanged)
+{
+    const String text = "%YAML:1.0\n---\nlsdScale: 0.5\nmergeThreshold: 0.9\nendpointDistance: -3\n";
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    FileStorage in(text, FileStorage::READ | FileStorage::MEMORY);
+    EXPECT_THROW(detector->read(in.root()), cv::Exception);
+    EXPECT_EQ(1.0, detector->getLsdScale());
+    EXPECT_EQ(0.6, detector->getMergeThreshold());
+    EXPECT_EQ(10.0, detector->getEndpointDistance());
+}
+
 TEST(LSDAdvance_Parameters, every_base_detector_parameter_changes_the_base_segments)
 {
     const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);

@@ -81,8 +81,8 @@ CV_EXPORTS_W void writeSegments(const String& path, InputArray lines);
 /** @brief One image of a line-segment data set and its ground truth. */
 struct CV_EXPORTS_W_SIMPLE LabelledImage
 {
-    CV_PROP_RW String imagePath;
-    CV_PROP_RW std::vector<Vec4f> groundTruth;
+    CV_PROP_RW String imagePath;               //!< path of the image file
+    CV_PROP_RW std::vector<Vec4f> groundTruth; //!< ground-truth segments (x1, y1, x2, y2) in the data set's coordinates
 };
 
 /** @brief Loads a YorkUrban-LineSegment folder: `images/NAME.jpg` with `gt/NAME_gt.txt`.
