@@ -13,10 +13,16 @@
 #                          ${XDG_CACHE_HOME:-~/.cache}/lsd_advance/opencv-<version>, fetched there
 #                          by scripts/fetch_opencv_source.sh when missing (Debian).
 #   LSD_ADVANCE_WERROR=ON  treat warnings as errors in the module's own targets
+#   LSD_ADVANCE_SANITIZE=<list>  build every target (library, tests, ts, samples) with
+#                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
+#                          reports are fatal (-fno-sanitize-recover=all)
+#   LSD_ADVANCE_FUZZ=ON    the libFuzzer target lsd_advance_fuzz (fuzz/; needs clang; scripts/fuzz.sh)
 
 option(BUILD_TESTS "Build accuracy and performance tests (needs an OpenCV source tree for ts)" ON)
 option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
+set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
+option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
 
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
@@ -75,6 +81,13 @@ if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
 endif()
 if(LSD_ADVANCE_WERROR)
   list(APPEND LSDA_WARNINGS -Werror)
+endif()
+
+if(LSD_ADVANCE_SANITIZE)
+  # Before any target, so that ts and the tests are instrumented like the library.
+  add_compile_options(-fsanitize=${LSD_ADVANCE_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=${LSD_ADVANCE_SANITIZE})
+  message(STATUS "lsd_advance: sanitizers ${LSD_ADVANCE_SANITIZE}")
 endif()
 
 # ---------------------------------------------------------------------------------------------
@@ -159,6 +172,10 @@ if(BUILD_TESTS)
       set_tests_properties(${_t} PROPERTIES ENVIRONMENT "OPENCV_SAMPLES_DATA_PATH=${LSDA_SAMPLES_DATA_PATH}")
     endif()
   endforeach()
+endif()
+
+if(LSD_ADVANCE_FUZZ)
+  add_subdirectory("${LSDA_ROOT}/fuzz" "${CMAKE_BINARY_DIR}/fuzz")
 endif()
 
 message(STATUS "lsd_advance: BUILD_TESTS=${BUILD_TESTS} BUILD_EXAMPLES=${BUILD_EXAMPLES}")

@@ -2,42 +2,125 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Each LSDAdvance case has the same case for OpenCV's LSD, so that ratios come from one run.
+// Every LSDAdvance case has the same case for OpenCV's LSD, FLD and EDLines, so that ratios
+// come from one run (doc/performance.md).
 
 #include "perf_precomp.hpp"
+#include "opencv2/ximgproc.hpp"
+#include "opencv2/core/utils/filesystem.hpp"
 
 namespace opencv_test { namespace {
 
 using namespace cv::ximgproc;
 
-enum Detector { LSD, LSD_ADVANCE };
-CV_ENUM(DetectorType, LSD, LSD_ADVANCE)
+enum Method
+{
+    LSD,                      // OpenCV's LineSegmentDetector, defaults
+    FLD,                      // FastLineDetector, defaults
+    EDLINES,                  // EdgeDrawing's EDLines, defaults
+    LSDA,                     // LSDAdvance, defaults
+    LSDA_BASE_ONLY,           // LSDAdvance's default base LSD, stages off
+    LSDA_ON_OPENCV_LSD,       // LSDAdvance, base LSD with OpenCV's default set-up
+    LSDA_ON_FLD,              // LSDAdvance on FastLineDetector
+    LSDA_ON_EDLINES,          // LSDAdvance on EDLines
+    LSDA_ON_EDLINES_TUNED     // LSDAdvance on EDLines, the sweep's best set-up (doc/performance.md)
+};
+CV_ENUM(MethodType, LSD, FLD, EDLINES, LSDA, LSDA_BASE_ONLY, LSDA_ON_OPENCV_LSD, LSDA_ON_FLD, LSDA_ON_EDLINES,
+        LSDA_ON_EDLINES_TUNED)
 
 typedef std::function<void(const Mat&, std::vector<Vec4f>&)> DetectFunction;
 
-DetectFunction makeDetector(int detector)
+DetectFunction makeDetector(int method)
 {
-    if (detector == LSD)
+    if (method == LSD)
     {
         Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
         return [lsd](const Mat& image, std::vector<Vec4f>& lines) { lsd->detect(image, lines); };
     }
+    if (method == FLD)
+    {
+        Ptr<FastLineDetector> fld = createFastLineDetector();
+        return [fld](const Mat& image, std::vector<Vec4f>& lines) { fld->detect(image, lines); };
+    }
+    if (method == EDLINES)
+    {
+        Ptr<EdgeDrawing> ed = createEdgeDrawing();
+        return [ed](const Mat& image, std::vector<Vec4f>& lines) {
+            ed->detectEdges(image);
+            ed->detectLines(lines);
+        };
+    }
     Ptr<LSDAdvance> advance = createLSDAdvance();
+    if (method == LSDA_BASE_ONLY)
+    {
+        advance->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);
+        advance->setMergeStrategy(LSDAdvance::MERGE_NONE);
+    }
+    else if (method == LSDA_ON_OPENCV_LSD)
+    {
+        advance->setLsdRefine(LSD_REFINE_STD);
+        advance->setLsdScale(0.8);
+    }
+    else if (method == LSDA_ON_FLD)
+        advance->setBaseDetector(LSDAdvance::BASE_FLD);
+    else if (method == LSDA_ON_EDLINES)
+        advance->setBaseDetector(LSDAdvance::BASE_EDLINES);
+    else if (method == LSDA_ON_EDLINES_TUNED)
+    {
+        advance->setBaseDetector(LSDAdvance::BASE_EDLINES);
+        advance->setEdSigma(0.5);
+        advance->setEdGradientThreshold(30);
+        advance->setLengthThreshold(LSDAdvance::LENGTH_THRESHOLD_PAPER);
+        advance->setMaxPerpendicularOffset(2.0);
+    }
     return [advance](const Mat& image, std::vector<Vec4f>& lines) { advance->detect(image, lines); };
 }
 
-typedef perf::TestBaseWithParam<tuple<std::string, DetectorType> > LineDetection_Image;
+// The body of every case: times `method` on `image` (TEST_CYCLE needs the test's own members).
+#define MEASURE_DETECTION(image, method)                 \
+    ASSERT_FALSE((image).empty());                       \
+    const DetectFunction detect = makeDetector(method);  \
+    std::vector<Vec4f> lines;                            \
+    TEST_CYCLE() detect(image, lines);                   \
+    EXPECT_FALSE(lines.empty());                         \
+    SANITY_CHECK_NOTHING()
+
+typedef perf::TestBaseWithParam<tuple<std::string, MethodType> > LineDetection_Image;
 
 PERF_TEST_P(LineDetection_Image, detect,
-            testing::Combine(testing::Values("building.jpg", "graf1.png"), DetectorType::all()))
+            testing::Combine(testing::Values("building.jpg", "graf1.png"), MethodType::all()))
 {
     const Mat image = imread(samples::findFile(get<0>(GetParam())), IMREAD_GRAYSCALE);
-    ASSERT_FALSE(image.empty());
-    const DetectFunction detect = makeDetector(get<1>(GetParam()));
-    std::vector<Vec4f> lines;
-    TEST_CYCLE() detect(image, lines);
-    EXPECT_FALSE(lines.empty());
-    SANITY_CHECK_NOTHING();
+    MEASURE_DETECTION(image, get<1>(GetParam()));
+}
+
+// An image of the evaluation data (LSD_ADVANCE_DATA_DIR): skipped without it, except under
+// CI=true, where it fails.
+Mat evaluationImage(const std::string& relativePath)
+{
+    const char* root = getenv("LSD_ADVANCE_DATA_DIR");
+    const char* ci = getenv("CI");
+    const std::string path = root ? utils::fs::join(root, relativePath) : std::string();
+    if (path.empty() || !utils::fs::exists(path))
+    {
+        if (ci && std::string(ci) == "true")
+            CV_Error_(Error::StsError, ("evaluation image %s not found: set LSD_ADVANCE_DATA_DIR to ../shared/data",
+                                        relativePath.c_str()));
+        throw SkipTestException("LSD_ADVANCE_DATA_DIR does not hold " + relativePath);
+    }
+    return imread(path, IMREAD_GRAYSCALE);
+}
+
+typedef perf::TestBaseWithParam<tuple<std::string, MethodType> > LineDetection_Data;
+
+// Two YorkUrban images (640x480) and two KITTI frames (1226x370).
+PERF_TEST_P(LineDetection_Data, detect,
+            testing::Combine(testing::Values("yorkurban/images/P1020177.jpg", "yorkurban/images/P1080091.jpg",
+                                             "kitti_seq1/image_l/000000.png", "kitti_seq1/image_l/000030.png"),
+                             MethodType::all()))
+{
+    const Mat image = evaluationImage(get<0>(GetParam()));
+    MEASURE_DETECTION(image, get<1>(GetParam()));
 }
 
 // Rectangles and bars with noise, at the usual camera sizes.
@@ -57,18 +140,14 @@ Mat syntheticScene(const Size& size)
     return img;
 }
 
-typedef perf::TestBaseWithParam<tuple<Size, DetectorType> > LineDetection_Synthetic;
+typedef perf::TestBaseWithParam<tuple<Size, MethodType> > LineDetection_Synthetic;
 
 PERF_TEST_P(LineDetection_Synthetic, detect,
             testing::Combine(testing::Values(Size(640, 480), Size(1226, 370), Size(1920, 1080)),
-                             DetectorType::all()))
+                             testing::Values(MethodType(LSD), MethodType(LSDA), MethodType(LSDA_ON_EDLINES))))
 {
     const Mat image = syntheticScene(get<0>(GetParam()));
-    const DetectFunction detect = makeDetector(get<1>(GetParam()));
-    std::vector<Vec4f> lines;
-    TEST_CYCLE() detect(image, lines);
-    EXPECT_FALSE(lines.empty());
-    SANITY_CHECK_NOTHING();
+    MEASURE_DETECTION(image, get<1>(GetParam()));
 }
 
 }} // namespace

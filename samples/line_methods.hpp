@@ -58,8 +58,9 @@ inline double timedDetect(const LineMethod& method, const cv::Mat& gray, int rep
 //! Names accepted by makeLineMethod, for help texts.
 inline const char* lineMethodNames()
 {
-    return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, "
-           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking";
+    return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, lsdadvance_merge, "
+           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_lsd, lsdadvance_fld, "
+           "lsdadvance_edlines, lsdadvance_edlines_tuned";
 }
 
 inline LineMethod lineMethodOf(const std::string& name,
@@ -160,6 +161,37 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
     if (name == "lsdadvance_tracking")
         return lineMethodOf("LSDAdvance, count tracking",
                             ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_COUNT_TRACKING));
+    if (name == "lsdadvance_merge")
+        return lineMethodOf("LSDAdvance, merging only (no length filter)",
+                            ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE));
+    // The default stages on other bases: OpenCV's default LSD set-up (refinement, scale 0.8),
+    // FastLineDetector and EDLines with their defaults.
+    if (name == "lsdadvance_opencv_lsd")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setLsdRefine(LSD_REFINE_STD);
+        detector->setLsdScale(0.8);
+        return lineMethodOf("LSDAdvance on OpenCV's default LSD", detector);
+    }
+    if (name == "lsdadvance_fld" || name == "lsdadvance_edlines")
+    {
+        const bool fld = name == "lsdadvance_fld";
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(fld ? ximgproc::LSDAdvance::BASE_FLD : ximgproc::LSDAdvance::BASE_EDLINES);
+        return lineMethodOf(fld ? "LSDAdvance on FLD" : "LSDAdvance on EDLines", detector);
+    }
+    // EDLines without smoothing and a higher gradient threshold, the paper's length threshold and
+    // a 2 px gate: the best of the sweep on the even YorkUrban images (doc/performance.md).
+    if (name == "lsdadvance_edlines_tuned")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_EDLINES);
+        detector->setEdSigma(0.5);
+        detector->setEdGradientThreshold(30);
+        detector->setLengthThreshold(ximgproc::LSDAdvance::LENGTH_THRESHOLD_PAPER);
+        detector->setMaxPerpendicularOffset(2.0);
+        return lineMethodOf("LSDAdvance on EDLines, tuned", detector);
+    }
     if (name == "lsdadvance_base")
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE);

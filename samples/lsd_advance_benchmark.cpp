@@ -6,10 +6,16 @@
 //  --dataset=yorkurban: structural AP / AR / F against YorkUrban-LineSegment ground truth,
 //    segments per image, long-segment share and median time per image (the paper's Table 2);
 //  --dataset=sequence: mean and standard deviation over frames of segments per frame,
-//    long-segment share and time per frame (the paper's Table 1).
+//    long-segment share and time per frame (the paper's Table 1), and LBD matching between
+//    consecutive frames checked against the epipolar geometry of the poses (doc/matching.md);
+//  --dataset=homography: LBD matching between image pairs related by a known homography:
+//    matches, correct matches, precision, repeatability and localisation error (doc/matching.md).
 // Prints Markdown tables on stdout, optionally writes CSV, and reports progress on stderr.
 
 #include "line_methods.hpp"
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+#include "line_matching.hpp"
+#endif
 
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -118,12 +124,84 @@ Table benchmarkYorkUrban(const std::vector<LineMethod>& methods, const std::vect
     return table;
 }
 
-Table benchmarkSequence(const std::vector<LineMethod>& methods, const std::vector<String>& frames, double longLength)
+// Whether and how the sequence benchmark matches consecutive frames.
+struct LineMatchOptions
 {
+    bool enabled = false;
+    int top = 0;  //!< when > 0, each method matches only its `top` longest segments
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    LineMatchParams params;
+#endif
+};
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+// The `top` longest segments (all when top <= 0), longest first: a front end's line budget.
+std::vector<Vec4f> longestSegments(std::vector<Vec4f> lines, int top)
+{
+    if (top <= 0 || (size_t)top >= lines.size())
+        return lines;
+    std::vector<std::pair<float, int> > order;
+    for (size_t i = 0; i < lines.size(); i++)
+        order.push_back(std::make_pair(-(float)std::hypot(lines[i][2] - lines[i][0], lines[i][3] - lines[i][1]), (int)i));
+    std::stable_sort(order.begin(), order.end());
+    std::vector<Vec4f> kept;
+    for (int i = 0; i < top; i++)
+        kept.push_back(lines[order[i].second]);
+    return kept;
+}
+
+// Matches of one method accumulated over image pairs.
+struct MatchTotals
+{
+    int pairs = 0;
+    double matches = 0, correct = 0, undecidable = 0, decided = 0;
+    double repeated = 0, visible = 0, errorSum = 0;
+
+    void addHomography(const ximgproc::HomographyMatchScore& s)
+    {
+        pairs++;
+        matches += s.matches;
+        correct += s.correct;
+        decided += s.matches;
+        repeated += s.repeated;
+        visible += s.visible;
+        errorSum += s.localisationError * s.repeated;
+    }
+    void addEpipolar(const ximgproc::EpipolarMatchScore& s)
+    {
+        pairs++;
+        matches += s.matches;
+        correct += s.consistent;
+        decided += s.consistent + s.inconsistent;
+        undecidable += s.undecidable;
+    }
+    double perPair(double total) const { return pairs > 0 ? total / pairs : 0.0; }
+    double precision() const { return decided > 0 ? correct / decided : 0.0; }
+};
+#endif
+
+Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceData& sequence, double longLength,
+                        const LineMatchOptions& matching)
+{
+    const std::vector<String>& frames = sequence.imagePaths;
     Table table;
     table.header = { "method", "segments / frame (mean)", "segments / frame (std)", "long share (mean)",
                      "long share (std)", "ms / frame (mean)", "ms / frame (std)", "ms / frame (median)" };
     std::vector<std::vector<double> > counts(methods.size()), shares(methods.size()), ms(methods.size());
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    const bool withPoses = !sequence.P0.empty() && !sequence.poses.empty();
+    if (matching.enabled)
+    {
+        table.header.push_back("matches / pair");
+        if (withPoses)
+            for (const char* h : { "consistent / pair", "undecidable / pair", "precision (consistent / decidable)" })
+                table.header.push_back(h);
+    }
+    std::vector<MatchTotals> totals(methods.size());
+    std::vector<DescribedLines> previous(methods.size());
+#else
+    CV_UNUSED(matching);
+#endif
     for (const LineMethod& m : methods)
         m.reset();
     for (size_t k = 0; k < frames.size(); k++)
@@ -137,6 +215,26 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const std::vecto
             ms[m].push_back(timedDetect(methods[m], gray, 1, lines, false));
             counts[m].push_back((double)lines.size());
             shares[m].push_back(longSegmentShare(lines, longLength));
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+            if (!matching.enabled)
+                continue;
+            DescribedLines current = describeLines(gray, longestSegments(lines, matching.top));
+            if (k > 0)
+            {
+                const std::vector<DMatch> matches = matchLines(previous[m], current, matching.params);
+                if (withPoses)
+                {
+                    const Mat F = fundamentalFromPoses(sequence.P0, sequence.poses[k - 1], sequence.poses[k]);
+                    totals[m].addEpipolar(evaluateEpipolarMatches(previous[m].lines, current.lines, matches, F));
+                }
+                else
+                {
+                    totals[m].pairs++;
+                    totals[m].matches += (double)matches.size();
+                }
+            }
+            previous[m] = current;
+#endif
         }
     }
     std::cerr << "\n";
@@ -149,9 +247,63 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const std::vecto
         table.rows.push_back({ methods[m].name, format("%.1f", cm), format("%.1f", cs), format("%.3f", sm),
                                format("%.3f", ss), format("%.1f", tm), format("%.1f", ts),
                                format("%.1f", median(ms[m])) });
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+        if (!matching.enabled)
+            continue;
+        const MatchTotals& t = totals[m];
+        table.rows.back().push_back(format("%.1f", t.perPair(t.matches)));
+        if (withPoses)
+            for (const std::string& cell : { format("%.1f", t.perPair(t.correct)), format("%.1f", t.perPair(t.undecidable)),
+                                             format("%.3f", t.precision()) })
+                table.rows.back().push_back(cell);
+#endif
     }
     return table;
 }
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vector<HomographyPair>& pairs,
+                          const LineMatchOptions& matching, int repeats)
+{
+    Table table;
+    table.header = { "method", "segments / image", "matches / pair", "correct / pair", "precision",
+                     "repeatability", "localisation error (px)", "ms / image (median)" };
+    std::vector<MatchTotals> totals(methods.size());
+    std::vector<double> segments(methods.size(), 0.0);
+    std::vector<std::vector<double> > ms(methods.size());
+    for (size_t k = 0; k < pairs.size(); k++)
+    {
+        std::cerr << "\r[homography] pair " << k + 1 << "/" << pairs.size() << std::flush;
+        const Mat gray1 = imread(pairs[k].image1Path, IMREAD_GRAYSCALE);
+        const Mat gray2 = imread(pairs[k].image2Path, IMREAD_GRAYSCALE);
+        CV_Assert(!gray1.empty() && !gray2.empty());
+        for (size_t m = 0; m < methods.size(); m++)
+        {
+            std::vector<Vec4f> lines1, lines2;
+            ms[m].push_back(timedDetect(methods[m], gray1, repeats, lines1, true));
+            ms[m].push_back(timedDetect(methods[m], gray2, repeats, lines2, true));
+            lines1 = longestSegments(lines1, matching.top);
+            lines2 = longestSegments(lines2, matching.top);
+            segments[m] += (double)(lines1.size() + lines2.size());
+            const std::vector<DMatch> matches =
+                matchLines(describeLines(gray1, lines1), describeLines(gray2, lines2), matching.params);
+            totals[m].addHomography(
+                evaluateHomographyMatches(lines1, lines2, matches, pairs[k].H, gray1.size(), gray2.size()));
+        }
+    }
+    std::cerr << "\n";
+    for (size_t m = 0; m < methods.size(); m++)
+    {
+        const MatchTotals& t = totals[m];
+        table.rows.push_back({ methods[m].name, format("%.1f", segments[m] / (2.0 * pairs.size())),
+                               format("%.1f", t.perPair(t.matches)), format("%.1f", t.perPair(t.correct)),
+                               format("%.3f", t.precision()), format("%.3f", t.visible > 0 ? t.repeated / t.visible : 0.0),
+                               format("%.2f", t.repeated > 0 ? t.errorSum / t.repeated : 0.0),
+                               format("%.1f", median(ms[m])) });
+    }
+    return table;
+}
+#endif
 
 } // namespace
 
@@ -159,8 +311,16 @@ int main(int argc, char** argv)
 {
     const String keys =
         "{help h   |            | print this help }"
-        "{dataset  | yorkurban  | yorkurban (structural precision/recall) or sequence (counts over frames) }"
-        "{data     |            | data folder: YorkUrban layout (images/, gt/) or a sequence (image_l/, cam0/data/ or images) }"
+        "{dataset  | yorkurban  | yorkurban (structural precision/recall), sequence (counts over frames, LBD matching "
+                                  "of consecutive frames) or homography (LBD matching of image pairs) }"
+        "{data     |            | data folder: YorkUrban layout (images/, gt/), a sequence (image_l/, cam0/data/ or "
+                                  "images; calib.txt + poses.txt for the epipolar check) or an HPatches folder (1.ppm..6.ppm, H_1_k) }"
+        "{image1   |            | homography without --data: the first image of one pair (OpenCV sample names are found) }"
+        "{image2   |            | homography without --data: the second image }"
+        "{homography |          | homography without --data: 3x3 matrix file from image1 to image2 (text, or OpenCV XML) }"
+        "{max-hamming | 30      | LBD matching: largest Hamming distance of a kept mutual nearest neighbour }"
+        "{no-match |            | sequence: skip the LBD matching columns }"
+        "{top      | 0          | LBD matching: each method matches only its N longest segments per image (0: all) }"
         "{methods  | lsd,fld,fld_merge,edlines,plvins,lsdadvance | comma-separated methods }"
         "{params   |            | YAML/XML of LSDAdvance parameters (write() or save()) for the lsdadvance method }"
         "{subset   | all        | yorkurban images to use: all, even or odd (by index in list.txt) }"
@@ -170,7 +330,7 @@ int main(int argc, char** argv)
         "{csv      |            | also write the table to this CSV file }";
     CommandLineParser parser(argc, argv, keys);
     parser.about("LSDAdvance benchmark: " + std::string(lineMethodNames()));
-    if (parser.has("help") || !parser.has("data"))
+    if (parser.has("help") || (!parser.has("data") && !parser.has("image1")))
     {
         parser.printMessage();
         return parser.has("help") ? 0 : 1;
@@ -182,6 +342,12 @@ int main(int argc, char** argv)
     const int repeats = std::max(1, parser.get<int>("repeats"));
     const double longLength = parser.get<double>("long");
     const String csv = parser.get<String>("csv");
+    LineMatchOptions matching;
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    matching.enabled = !parser.has("no-match");
+    matching.params.maxHamming = parser.get<int>("max-hamming");
+    matching.top = parser.get<int>("top");
+#endif
     setNumThreads(parser.get<int>("threads"));
     if (!parser.check())
     {
@@ -216,11 +382,32 @@ int main(int argc, char** argv)
         const SequenceData sequence = loadSequence(data);
         std::cout << "Sequence: " << sequence.imagePaths.size() << " frames from " << data << ", "
                   << getNumThreads() << " thread(s), long = " << longLength << " px\n\n";
-        table = benchmarkSequence(methods, sequence.imagePaths, longLength);
+        table = benchmarkSequence(methods, sequence, longLength, matching);
     }
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    else if (dataset == "homography")
+    {
+        std::vector<HomographyPair> pairs;
+        if (!data.empty())
+            pairs = loadHomographyPairs(data);
+        else
+        {
+            HomographyPair pair;
+            pair.image1Path = samples::findFile(parser.get<String>("image1"));
+            pair.image2Path = samples::findFile(parser.get<String>("image2"));
+            pair.H = readHomography(samples::findFile(parser.get<String>("homography")));
+            pairs.push_back(pair);
+        }
+        std::cout << "Homography pairs: " << pairs.size() << " from " << (data.empty() ? pairs[0].image1Path : data)
+                  << ", LBD, mutual nearest neighbours with Hamming distance <= " << matching.params.maxHamming
+                  << ", correct within 3 px (doc/matching.md), " << getNumThreads() << " thread(s)\n\n";
+        table = benchmarkHomography(methods, pairs, matching, repeats);
+    }
+#endif
     else
     {
-        std::cerr << "Unknown dataset '" << dataset << "' (yorkurban or sequence)" << std::endl;
+        std::cerr << "Unknown dataset '" << dataset << "' (yorkurban, sequence, or homography when line_descriptor is built)"
+                  << std::endl;
         return 1;
     }
     table.print(std::cout);

@@ -7,6 +7,7 @@
 // and drawn on the image (<stem>.png), and prints segments per image, the share of long
 // segments and the time of the detection.
 
+#include "frame_source.hpp"
 #include "line_methods.hpp"
 
 #include <opencv2/core/utility.hpp>
@@ -25,81 +26,6 @@
 using namespace cv;
 
 namespace {
-
-// File name without folder and extension.
-std::string stemOf(const std::string& path)
-{
-    const size_t slash = path.find_last_of("/\\");
-    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-    return name.substr(0, name.rfind('.'));
-}
-
-// The gray images to detect on, one after the other: an image file, the images of a folder
-// in name order, or the frames of a video.
-class FrameSource
-{
-public:
-    //! Throws std::runtime_error when the input does not exist, cannot be read or holds no image.
-    explicit FrameSource(const String& input)
-    {
-        // Finds sample names such as building.jpg; keeps what it cannot find (video URLs, patterns).
-        const String path = samples::findFileOrKeep(input, true);
-        if (utils::fs::isDirectory(path))
-            paths_ = ximgproc::loadSequence(path).imagePaths;  // name order; throws when there is none
-        else if (utils::fs::exists(path) && haveImageReader(path))
-        {
-            paths_.push_back(path);
-            singleImage_ = true;
-        }
-        // Streams and image-sequence patterns do not exist as files; anything else missing is
-        // reported here rather than by the video backends' warnings.
-        else if (!utils::fs::exists(path) && path.find("://") == String::npos && path.find('%') == String::npos)
-            throw std::runtime_error("no such image, folder or video: " + path);
-        else if (!video_.open(path))
-            throw std::runtime_error("cannot read " + path + " as an image or a video");
-    }
-
-    //! Number of images, 0 when a video does not tell.
-    size_t count() const
-    {
-        return video_.isOpened() ? (size_t)std::max(0.0, video_.get(CAP_PROP_FRAME_COUNT)) : paths_.size();
-    }
-
-    //! An image file, not a folder or a video.
-    bool isSingleImage() const { return singleImage_; }
-
-    //! The next image as CV_8UC1 and the stem of its output files; false after the last one.
-    bool next(Mat& gray, std::string& stem)
-    {
-        if (video_.isOpened())
-        {
-            Mat frame;
-            if (!video_.read(frame) || frame.empty())
-                return false;
-            if (frame.channels() == 1)
-                gray = frame;
-            else
-                cvtColor(frame, gray, frame.channels() == 4 ? COLOR_BGRA2GRAY : COLOR_BGR2GRAY);
-            stem = format("frame_%06d", frameIndex_++);
-            return true;
-        }
-        if (nextPath_ == paths_.size())
-            return false;
-        const String& path = paths_[nextPath_++];
-        gray = imread(path, IMREAD_GRAYSCALE);
-        if (gray.empty())
-            throw std::runtime_error("cannot read " + path);
-        stem = stemOf(path);
-        return true;
-    }
-
-private:
-    std::vector<String> paths_;
-    bool singleImage_ = false;
-    size_t nextPath_ = 0;
-    VideoCapture video_;
-    int frameIndex_ = 0;
-};
 
 struct Summary
 {
@@ -220,17 +146,5 @@ int main(int argc, char** argv)
         parser.printMessage();
         return 0;
     }
-    try
-    {
-        return run(parser);
-    }
-    catch (const cv::Exception& e)
-    {
-        std::cerr << "Error: " << e.err << std::endl;
-    }
-    catch (const std::exception& e)
-    {
-        std::cerr << "Error: " << e.what() << std::endl;
-    }
-    return 1;
+    return runReportingErrors([&parser] { return run(parser); });
 }

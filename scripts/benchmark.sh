@@ -7,8 +7,9 @@
 #
 # Produces the tables of README "Results": every method in one run per data set, one thread,
 # on YorkUrban (all images, then the odd images the defaults were not tuned on), KITTI and
-# EuRoC. DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository.
-# Builds the samples first when the build directory has none. Takes about 10 minutes.
+# EuRoC, then LBD line matching on the HPatches graffiti pairs, OpenCV's graf1/graf3 and KITTI
+# (doc/matching.md). DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository.
+# Builds the samples first when the build directory has none. Takes about 20 minutes.
 #
 # Environment:
 #   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)
@@ -26,9 +27,11 @@ if [ ! -x "$BUILD/lsd_advance_benchmark" ]; then
   [ -f "$BUILD/CMakeCache.txt" ] || cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTS=OFF
   cmake --build "$BUILD" -j"$JOBS" --target lsd_advance_benchmark
 fi
+export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
 
 B="$BUILD/lsd_advance_benchmark"
 STILL="lsd,fld,fld_merge,edlines,plvins,lsdadvance_paper,lsdadvance_base,lsdadvance"
+MATCHING="lsd,fld,edlines,lsdadvance_paper,lsdadvance_merge,lsdadvance"
 SEQUENCE="lsd,fld,edlines,lsdadvance_paper,lsdadvance_filter,lsdadvance_alpha1,lsdadvance,lsdadvance_continuous,lsdadvance_tracking"
 
 echo "### YorkUrban-LineSegment, all 51 images"
@@ -41,8 +44,28 @@ echo
 echo
 echo "### KITTI, 51 consecutive frames (a sequence: inter-frame factors active)"
 echo
-"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$SEQUENCE"
+"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$SEQUENCE" --no-match
 echo
 echo "### EuRoC V1_01 before take-off, 95 frames of a still camera"
 echo
-"$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$SEQUENCE"
+"$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$SEQUENCE" --no-match
+echo
+echo "### LBD matching, HPatches v_graffiti (pairs 1-2 ... 1-6, exact homographies)"
+echo
+"$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$MATCHING"
+echo
+echo "### LBD matching, OpenCV's graf1.png / graf3.png with H1to3p.xml"
+echo
+"$B" --dataset=homography --image1=graf1.png --image2=graf3.png --homography=H1to3p.xml --methods="$MATCHING"
+echo
+echo "### LBD matching, KITTI consecutive frames (epipolar check, 50 pairs)"
+echo
+"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$MATCHING"
+echo
+echo "### LBD matching at an equal line budget: HPatches v_graffiti, each method's 500 longest segments"
+echo
+"$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$MATCHING" --top=500
+echo
+echo "### LBD matching at an equal line budget: KITTI, each method's 400 longest segments"
+echo
+"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$MATCHING" --top=400

@@ -3,10 +3,11 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 #
-# Usage: scripts/install_deps.sh [--intree]
+# Usage: scripts/install_deps.sh [--intree | --fuzz]
 #
 # Installs the Debian packages needed to build lsd_advance standalone against Debian's OpenCV
-# (and, with --intree, what scripts/check_intree.sh needs to build OpenCV from source).
+# (and, with --intree, what scripts/check_intree.sh needs to build OpenCV from source; with
+# --fuzz, clang and its libFuzzer/sanitizer runtimes for scripts/fuzz.sh).
 # Does nothing (no apt at all) when every package is already installed. Uses sudo only when
 # not root.
 set -euo pipefail
@@ -16,6 +17,8 @@ PACKAGES=(build-essential cmake pkg-config dpkg-dev
 if [ "${1:-}" = "--intree" ]; then
   # OpenCV's own build (Debian's source package has no 3rdparty/: use system codecs)
   PACKAGES+=(zlib1g-dev libjpeg-dev libpng-dev libtiff-dev libwebp-dev ninja-build python3 python3-dev python3-numpy)
+elif [ "${1:-}" = "--fuzz" ]; then
+  PACKAGES+=(clang libclang-rt-14-dev)
 fi
 
 missing=()

@@ -2,9 +2,12 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Stage 0: input conversion (images and segment arrays) and OpenCV's LSD as the base detector.
+// Stage 0: input conversion (images and segment arrays) and the base detectors: OpenCV's LSD,
+// FastLineDetector and EDLines (EdgeDrawing), used as they are.
 
 #include "precomp.hpp"
+#include "opencv2/ximgproc/edge_drawing.hpp"
+#include "opencv2/ximgproc/fast_line_detector.hpp"
 
 namespace cv {
 namespace ximgproc {
@@ -31,22 +34,131 @@ Mat toGray8U(InputArray image)
     return gray;
 }
 
-Ptr<LineSegmentDetector> createBaseLsd(const LsdParams& p)
+namespace {
+
+class LsdBase CV_FINAL : public BaseSegmentDetector
 {
-    return createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
-                                     p.logEps, p.densityThreshold, p.numBins);
+public:
+    explicit LsdBase(const LsdParams& p)
+        : lsd(createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
+                                        p.logEps, p.densityThreshold, p.numBins))
+    {}
+    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE { lsd->detect(gray, segments); }
+
+private:
+    Ptr<LineSegmentDetector> lsd;
+};
+
+// FastLineDetector orients its segments brighter side on the left, like LSD.
+class FldBase CV_FINAL : public BaseSegmentDetector
+{
+public:
+    explicit FldBase(const FldParams& p)
+        : fld(createFastLineDetector(p.lengthThreshold, (float)p.distanceThreshold, p.cannyThreshold1,
+                                     p.cannyThreshold2, p.cannyApertureSize, p.doMerge))
+    {}
+    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
+    {
+        // FastLineDetector blanks a 6 x 6 corner of its edge map and fails on a smaller image;
+        // such an image has no segment.
+        if (gray.cols < kMinSide || gray.rows < kMinSide)
+            segments.clear();
+        else
+            fld->detect(gray, segments);
+    }
+
+private:
+    static constexpr int kMinSide = 6;
+    Ptr<FastLineDetector> fld;
+};
+
+// EDLines orients a segment along the edge it traced, either way.
+class EdLinesBase CV_FINAL : public BaseSegmentDetector
+{
+public:
+    explicit EdLinesBase(const EdParams& p) : ed(createEdgeDrawing())
+    {
+        ed->params.EdgeDetectionOperator = p.gradientOperator;
+        ed->params.GradientThresholdValue = p.gradientThreshold;
+        ed->params.AnchorThresholdValue = p.anchorThreshold;
+        ed->params.ScanInterval = p.scanInterval;
+        ed->params.MinPathLength = p.minPathLength;
+        ed->params.Sigma = (float)p.sigma;
+        ed->params.NFAValidation = p.nfaValidation;
+        ed->params.MinLineLength = p.minLineLength;
+        ed->params.LineFitErrorThreshold = p.lineFitErrorThreshold;
+        ed->params.MaxDistanceBetweenTwoLines = p.maxDistanceBetweenTwoLines;
+        ed->params.MaxErrorThreshold = p.maxErrorThreshold;
+    }
+    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
+    {
+        ed->detectEdges(gray);
+        ed->detectLines(segments);
+        orientBrighterLeft(gray, segments);
+    }
+
+private:
+    Ptr<EdgeDrawing> ed;
+};
+
+} // namespace
+
+Ptr<BaseSegmentDetector> createBaseDetector(BaseKind kind, const LsdParams& lsd, const FldParams& fld,
+                                            const EdParams& ed)
+{
+    switch (kind)
+    {
+    case BaseKind::FLD:
+        return makePtr<FldBase>(fld);
+    case BaseKind::EDLINES:
+        return makePtr<EdLinesBase>(ed);
+    default:
+        return makePtr<LsdBase>(lsd);
+    }
 }
 
-std::vector<Vec4f> toSegments(InputArray lines, const char* what)
+void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments)
 {
-    std::vector<Vec4f> segments;
+    CV_CheckTypeEQ(gray.type(), CV_8UC1, "orientBrighterLeft samples a gray image");
+    constexpr double kSide = 2.0;  // px either side: off the edge for LSD's and EDLines' placements
+    const Rect inside(0, 0, gray.cols, gray.rows);
+    for (Vec4f& s : segments)
+    {
+        const Point2d a(s[0], s[1]), d(s[2] - s[0], s[3] - s[1]);
+        const double len = std::sqrt(d.dot(d));
+        if (len <= 0)
+            continue;
+        const Point2d left = Point2d(d.y, -d.x) * (kSide / len);  // left of d with y pointing down
+        int balance = 0;
+        for (int k = 0; k < 5; k++)
+        {
+            const Point2d m = a + d * (0.1 + 0.2 * k);
+            const Point l(cvRound(m.x + left.x), cvRound(m.y + left.y));
+            const Point r(cvRound(m.x - left.x), cvRound(m.y - left.y));
+            if (inside.contains(l) && inside.contains(r))
+                balance += (int)gray.at<uchar>(l) - (int)gray.at<uchar>(r);
+        }
+        if (balance < 0)
+            s = Vec4f(s[2], s[3], s[0], s[1]);
+    }
+}
+
+void toSegments(InputArray lines, const char* what, std::vector<Vec4f>& segments)
+{
+    segments.clear();
     if (lines.empty())
-        return segments;
+        return;
     const Mat m = lines.getMat();
     if (m.type() != CV_32FC4 || (m.rows != 1 && m.cols != 1))
         CV_Error_(Error::StsBadArg, ("%s must be an N x 1 or 1 x N CV_32FC4 array (std::vector<Vec4f>), got %s %dx%d",
                                      what, typeToString(m.type()).c_str(), m.cols, m.rows));
     m.reshape(4, (int)m.total()).copyTo(segments);
+}
+
+std::vector<Vec4f> toSegments(InputArray lines, const char* what)
+{
+    std::vector<Vec4f> segments;
+    toSegments(lines, what, segments);
     return segments;
 }
 

@@ -280,4 +280,66 @@ SequenceData loadSequence(const String& folder)
     return data;
 }
 
+Mat readHomography(const String& path)
+{
+    if (!utils::fs::exists(path))
+        CV_Error_(Error::StsError, ("cannot open %s", path.c_str()));
+    Mat H;
+    const size_t dot = path.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? std::string() : toLowerCase(path.substr(dot + 1));
+    if (ext == "xml" || ext == "yml" || ext == "yaml" || ext == "json")
+    {
+        FileStorage fs(path, FileStorage::READ);
+        const FileNode root = fs.root();
+        if (root.size() > 0)
+            (*root.begin()) >> H;
+    }
+    else
+    {
+        std::vector<double> values;
+        for (const std::vector<double>& row : readNumberRows(path, false))
+            values.insert(values.end(), row.begin(), row.end());
+        if (values.size() == 9)
+            H = Mat(values, true).reshape(1, 3);
+    }
+    if (H.rows != 3 || H.cols != 3 || H.channels() != 1)
+        CV_Error_(Error::StsParseError, ("%s: expected a 3x3 homography (9 numbers, or a 3x3 matrix as the first "
+                                         "node of an OpenCV .xml/.yml/.json file)", path.c_str()));
+    H.convertTo(H, CV_64F);
+    if (!checkRange(H))
+        CV_Error_(Error::StsParseError, ("%s: the homography is not finite", path.c_str()));
+    return H;
+}
+
+std::vector<HomographyPair> loadHomographyPairs(const String& folder)
+{
+    const String reference = utils::fs::join(folder, "1.ppm");
+    if (!utils::fs::exists(reference))
+        CV_Error_(Error::StsError, ("%s is not an HPatches-style folder: 1.ppm is missing", folder.c_str()));
+    std::vector<String> homographies;
+    glob(utils::fs::join(folder, "H_1_*"), homographies, false);
+    std::vector<std::pair<int, String> > indexed;
+    for (const String& path : homographies)
+    {
+        const std::string name = path.substr(path.find_last_of("/\\") + 1);
+        char* end = nullptr;
+        const long k = std::strtol(name.c_str() + 4, &end, 10);
+        if (*end == '\0' && k >= 2 && utils::fs::exists(utils::fs::join(folder, format("%ld.ppm", k))))
+            indexed.push_back(std::make_pair((int)k, path));
+    }
+    std::sort(indexed.begin(), indexed.end());
+    if (indexed.empty())
+        CV_Error_(Error::StsError, ("%s: no pair k.ppm + H_1_k (k >= 2)", folder.c_str()));
+    std::vector<HomographyPair> pairs;
+    for (const auto& item : indexed)
+    {
+        HomographyPair pair;
+        pair.image1Path = reference;
+        pair.image2Path = utils::fs::join(folder, format("%d.ppm", item.first));
+        pair.H = readHomography(item.second);
+        pairs.push_back(pair);
+    }
+    return pairs;
+}
+
 }} // namespace cv::ximgproc

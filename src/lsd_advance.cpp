@@ -7,6 +7,7 @@
 // segment_merging.cpp.
 
 #include "precomp.hpp"
+#include "opencv2/ximgproc/edge_drawing.hpp"  // EdgeDrawing::GradientOperator
 
 namespace cv {
 namespace ximgproc {
@@ -35,6 +36,19 @@ constexpr ParamRange kLsdAngleTolerance = { "lsdAngleTolerance", 0, true, 180, t
 constexpr ParamRange kLsdLogEps = { "lsdLogEps", -1000, false, 1000, false, "" };
 constexpr ParamRange kLsdDensityThreshold = { "lsdDensityThreshold", 0, false, 1, true, "" };
 constexpr ParamRange kLsdNumBins = { "lsdNumBins", 1, false, 65536, false, "" };
+constexpr ParamRange kFldLengthThreshold = { "fldLengthThreshold", 1, false, 100000, false, " px" };
+constexpr ParamRange kFldDistanceThreshold = { "fldDistanceThreshold", 0, true, 100, false, " px" };
+constexpr ParamRange kFldCannyThreshold1 = { "fldCannyThreshold1", 0, true, 100000, false, "" };
+constexpr ParamRange kFldCannyThreshold2 = { "fldCannyThreshold2", 0, true, 100000, false, "" };
+constexpr ParamRange kEdGradientThreshold = { "edGradientThreshold", 1, false, 10000, false, "" };
+constexpr ParamRange kEdAnchorThreshold = { "edAnchorThreshold", 0, false, 10000, false, "" };
+constexpr ParamRange kEdScanInterval = { "edScanInterval", 1, false, 100, false, "" };
+constexpr ParamRange kEdMinPathLength = { "edMinPathLength", 2, false, 100000, false, " px" };
+constexpr ParamRange kEdSigma = { "edSigma", 0, false, 100, false, "" };
+constexpr ParamRange kEdMinLineLength = { "edMinLineLength (or -1: from the image size)", 9, false, 100000, false, " px" };
+constexpr ParamRange kEdLineFitErrorThreshold = { "edLineFitErrorThreshold", 0, true, 100, false, " px" };
+constexpr ParamRange kEdMaxDistanceBetweenTwoLines = { "edMaxDistanceBetweenTwoLines", 0, true, 1000, false, " px" };
+constexpr ParamRange kEdMaxErrorThreshold = { "edMaxErrorThreshold", 0, true, 100, false, " px" };
 constexpr ParamRange kAngleBinWidth = { "angleBinWidth", 1, false, 90, false, " deg" };
 constexpr ParamRange kEndpointDistance = { "endpointDistance", 0.1, false, 200, false, " px" };
 constexpr ParamRange kBaselineRatio = { "baselineRatio", 0, true, 1, false, "" };
@@ -54,7 +68,7 @@ void assign(T& field, T value, const ParamRange& r)
                     (r.hiOpen ? v < r.hi : v <= r.hi);
     if (!ok)
         CV_Error_(Error::StsOutOfRange,
-                  ("LSDAdvance: %s must be a finite number in %c%g, %g%c%s, got %g", r.name,
+                  ("LSDAdvance: %s must be a finite number in %c%g, %g%c%s, got %.10g", r.name,
                    r.loOpen ? '(' : '[', r.lo, r.hi, r.hiOpen ? ')' : ']', r.unit, v));
     field = value;
 }
@@ -81,21 +95,26 @@ public:
         CV_INSTRUMENT_REGION();
         const int64 start = getTickCount();
         const Mat gray = lsda::toGray8U(image);
-        if (!baseLsd)
-            baseLsd = lsda::createBaseLsd(lsd);
-        std::vector<Vec4f> base;
-        baseLsd->detect(gray, base);
-        runStages(base, elapsedMs(start), lines);
+        if (!baseSegments)
+            baseSegments = lsda::createBaseDetector((lsda::BaseKind)baseDetector, lsd, fld, ed);
+        // LSD's resize throws on an image that scales to no pixel; such an image has no segment.
+        if (baseDetector != BASE_LSD ||
+            (saturate_cast<int>(gray.cols * lsd.scale) > 0 && saturate_cast<int>(gray.rows * lsd.scale) > 0))
+            baseSegments->detect(gray, frame.base);
+        else
+            frame.base.clear();
+        runStages(frame.base, elapsedMs(start), lines);
     }
 
     void processSegments(InputArray segments, OutputArray lines) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        std::vector<Vec4f> base = lsda::toSegments(segments, "LSDAdvance::processSegments: segments");
+        std::vector<Vec4f>& base = frame.base;
+        lsda::toSegments(segments, "LSDAdvance::processSegments: segments", base);
         if (!checkRange(Mat(base), true, nullptr, -kMaxCoordinate, kMaxCoordinate))
             CV_Error_(Error::StsOutOfRange,
                       ("LSDAdvance::processSegments: segment coordinates must be finite and within "
-                       "[-%g, %g] px", kMaxCoordinate, kMaxCoordinate));
+                       "[-%g, %g) px", kMaxCoordinate, kMaxCoordinate));
         runStages(base, 0.0, lines);
     }
 
@@ -128,6 +147,70 @@ public:
     double getLsdDensityThreshold() const CV_OVERRIDE { return lsd.densityThreshold; }
     void setLsdNumBins(int v) CV_OVERRIDE { assign(lsd.numBins, v, kLsdNumBins); baseDetectorChanged(); }
     int getLsdNumBins() const CV_OVERRIDE { return lsd.numBins; }
+
+    void setBaseDetector(int v) CV_OVERRIDE
+    {
+        assignEnum(baseDetector, v, "baseDetector", BASE_LSD, BASE_EDLINES, "BASE_LSD, BASE_FLD, BASE_EDLINES");
+        baseDetectorChanged();
+    }
+    int getBaseDetector() const CV_OVERRIDE { return baseDetector; }
+
+    void setFldLengthThreshold(int v) CV_OVERRIDE { assign(fld.lengthThreshold, v, kFldLengthThreshold); baseDetectorChanged(); }
+    int getFldLengthThreshold() const CV_OVERRIDE { return fld.lengthThreshold; }
+    void setFldDistanceThreshold(double v) CV_OVERRIDE { assign(fld.distanceThreshold, v, kFldDistanceThreshold); baseDetectorChanged(); }
+    double getFldDistanceThreshold() const CV_OVERRIDE { return fld.distanceThreshold; }
+    void setFldCannyThreshold1(double v) CV_OVERRIDE { assign(fld.cannyThreshold1, v, kFldCannyThreshold1); baseDetectorChanged(); }
+    double getFldCannyThreshold1() const CV_OVERRIDE { return fld.cannyThreshold1; }
+    void setFldCannyThreshold2(double v) CV_OVERRIDE { assign(fld.cannyThreshold2, v, kFldCannyThreshold2); baseDetectorChanged(); }
+    double getFldCannyThreshold2() const CV_OVERRIDE { return fld.cannyThreshold2; }
+    void setFldCannyApertureSize(int v) CV_OVERRIDE
+    {
+        if (v != 3 && v != 5 && v != 7)
+            CV_Error_(Error::StsOutOfRange, ("LSDAdvance: fldCannyApertureSize must be 3, 5 or 7, got %d", v));
+        fld.cannyApertureSize = v;
+        baseDetectorChanged();
+    }
+    int getFldCannyApertureSize() const CV_OVERRIDE { return fld.cannyApertureSize; }
+    void setFldDoMerge(bool v) CV_OVERRIDE { fld.doMerge = v; baseDetectorChanged(); }
+    bool getFldDoMerge() const CV_OVERRIDE { return fld.doMerge; }
+
+    void setEdGradientOperator(int v) CV_OVERRIDE
+    {
+        assignEnum(ed.gradientOperator, v, "edGradientOperator", EdgeDrawing::PREWITT,
+                   EdgeDrawing::LSD, "PREWITT, SOBEL, SCHARR, LSD of EdgeDrawing::GradientOperator");
+        baseDetectorChanged();
+    }
+    int getEdGradientOperator() const CV_OVERRIDE { return ed.gradientOperator; }
+    void setEdGradientThreshold(int v) CV_OVERRIDE { assign(ed.gradientThreshold, v, kEdGradientThreshold); baseDetectorChanged(); }
+    int getEdGradientThreshold() const CV_OVERRIDE { return ed.gradientThreshold; }
+    void setEdAnchorThreshold(int v) CV_OVERRIDE { assign(ed.anchorThreshold, v, kEdAnchorThreshold); baseDetectorChanged(); }
+    int getEdAnchorThreshold() const CV_OVERRIDE { return ed.anchorThreshold; }
+    void setEdScanInterval(int v) CV_OVERRIDE { assign(ed.scanInterval, v, kEdScanInterval); baseDetectorChanged(); }
+    int getEdScanInterval() const CV_OVERRIDE { return ed.scanInterval; }
+    void setEdMinPathLength(int v) CV_OVERRIDE { assign(ed.minPathLength, v, kEdMinPathLength); baseDetectorChanged(); }
+    int getEdMinPathLength() const CV_OVERRIDE { return ed.minPathLength; }
+    void setEdSigma(double v) CV_OVERRIDE { assign(ed.sigma, v, kEdSigma); baseDetectorChanged(); }
+    double getEdSigma() const CV_OVERRIDE { return ed.sigma; }
+    void setEdNfaValidation(bool v) CV_OVERRIDE { ed.nfaValidation = v; baseDetectorChanged(); }
+    bool getEdNfaValidation() const CV_OVERRIDE { return ed.nfaValidation; }
+    void setEdMinLineLength(int v) CV_OVERRIDE
+    {
+        if (v != -1)
+            assign(ed.minLineLength, v, kEdMinLineLength);
+        ed.minLineLength = v;
+        baseDetectorChanged();
+    }
+    int getEdMinLineLength() const CV_OVERRIDE { return ed.minLineLength; }
+    void setEdLineFitErrorThreshold(double v) CV_OVERRIDE { assign(ed.lineFitErrorThreshold, v, kEdLineFitErrorThreshold); baseDetectorChanged(); }
+    double getEdLineFitErrorThreshold() const CV_OVERRIDE { return ed.lineFitErrorThreshold; }
+    void setEdMaxDistanceBetweenTwoLines(double v) CV_OVERRIDE
+    {
+        assign(ed.maxDistanceBetweenTwoLines, v, kEdMaxDistanceBetweenTwoLines);
+        baseDetectorChanged();
+    }
+    double getEdMaxDistanceBetweenTwoLines() const CV_OVERRIDE { return ed.maxDistanceBetweenTwoLines; }
+    void setEdMaxErrorThreshold(double v) CV_OVERRIDE { assign(ed.maxErrorThreshold, v, kEdMaxErrorThreshold); baseDetectorChanged(); }
+    double getEdMaxErrorThreshold() const CV_OVERRIDE { return ed.maxErrorThreshold; }
 
     void setLengthFilterMode(int v) CV_OVERRIDE
     {
@@ -204,6 +287,8 @@ public:
             fs << p.name << (this->*p.get)();
         for (const RealParam& p : realParams())
             fs << p.name << (this->*p.get)();
+        for (const BoolParam& p : boolParams())
+            fs << p.name << (int)(this->*p.get)();
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
@@ -239,6 +324,15 @@ private:
                 CV_Error_(Error::StsParseError, ("LSDAdvance::read: %s must be a number", p.name));
             (this->*p.set)((double)node);
         }
+        for (const BoolParam& p : boolParams())
+        {
+            const FileNode node = fn[p.name];
+            if (node.empty())
+                continue;
+            if (!node.isInt() || ((int)node != 0 && (int)node != 1))
+                CV_Error_(Error::StsParseError, ("LSDAdvance::read: %s must be 0 or 1", p.name));
+            (this->*p.set)((int)node != 0);
+        }
     }
 
     struct IntParam
@@ -252,6 +346,12 @@ private:
         const char* name;
         double (LSDAdvanceImpl::*get)() const;
         void (LSDAdvanceImpl::*set)(double);
+    };
+    struct BoolParam  // stored as the integer 0 or 1
+    {
+        const char* name;
+        bool (LSDAdvanceImpl::*get)() const;
+        void (LSDAdvanceImpl::*set)(bool);
     };
 
     // Stages 1-3 in the configured order on the base segments; fills lastStats.
@@ -269,7 +369,8 @@ private:
                                          : lsda::adaptiveMinLength(base, 1.0, lengthThreshold);
         stats.filterMs = elapsedMs(t);
 
-        std::vector<Vec4f> work, out;
+        std::vector<Vec4f>& work = frame.work;
+        std::vector<Vec4f>& out = frame.out;
         if (stageOrder == FILTER_THEN_MERGE)
         {
             filterStage(base, unitMinLength, stats, work);
@@ -323,7 +424,7 @@ private:
         stats.filterMs += elapsedMs(t);
     }
 
-    void mergeStage(std::vector<Vec4f>& in, LSDAdvanceStats& stats, std::vector<Vec4f>& merged) const
+    void mergeStage(std::vector<Vec4f>& in, LSDAdvanceStats& stats, std::vector<Vec4f>& merged)
     {
         if (merging.strategy == lsda::MergeStrategy::NONE)
         {
@@ -332,14 +433,14 @@ private:
             return;
         }
         int64 t = getTickCount();
-        lsda::SegmentGroups groups;
-        lsda::groupSegments(in, grouping, groups);
+        lsda::SegmentGroups& groups = frame.groups;
+        lsda::groupSegments(in, grouping, groups, frame.grouping);
         for (int g = 0; g < groups.count(); g++)
             stats.mergeGroups += groups.offsets[g + 1] - groups.offsets[g] > 1;
         stats.groupingMs = elapsedMs(t);
 
         t = getTickCount();
-        lsda::mergeGroups(in, groups, merging, merged);
+        lsda::mergeGroups(in, groups, merging, merged, frame.merging);
         stats.mergedSegments = (int)merged.size();
         stats.mergingMs = elapsedMs(t);
     }
@@ -355,6 +456,15 @@ private:
             { "lengthThreshold", &LSDAdvanceImpl::getLengthThreshold, &LSDAdvanceImpl::setLengthThreshold },
             { "mergeStrategy", &LSDAdvanceImpl::getMergeStrategy, &LSDAdvanceImpl::setMergeStrategy },
             { "stageOrder", &LSDAdvanceImpl::getStageOrder, &LSDAdvanceImpl::setStageOrder },
+            { "baseDetector", &LSDAdvanceImpl::getBaseDetector, &LSDAdvanceImpl::setBaseDetector },
+            { "fldLengthThreshold", &LSDAdvanceImpl::getFldLengthThreshold, &LSDAdvanceImpl::setFldLengthThreshold },
+            { "fldCannyApertureSize", &LSDAdvanceImpl::getFldCannyApertureSize, &LSDAdvanceImpl::setFldCannyApertureSize },
+            { "edGradientOperator", &LSDAdvanceImpl::getEdGradientOperator, &LSDAdvanceImpl::setEdGradientOperator },
+            { "edGradientThreshold", &LSDAdvanceImpl::getEdGradientThreshold, &LSDAdvanceImpl::setEdGradientThreshold },
+            { "edAnchorThreshold", &LSDAdvanceImpl::getEdAnchorThreshold, &LSDAdvanceImpl::setEdAnchorThreshold },
+            { "edScanInterval", &LSDAdvanceImpl::getEdScanInterval, &LSDAdvanceImpl::setEdScanInterval },
+            { "edMinPathLength", &LSDAdvanceImpl::getEdMinPathLength, &LSDAdvanceImpl::setEdMinPathLength },
+            { "edMinLineLength", &LSDAdvanceImpl::getEdMinLineLength, &LSDAdvanceImpl::setEdMinLineLength },
         };
         return params;
     }
@@ -376,13 +486,28 @@ private:
             { "proximityRatio", &LSDAdvanceImpl::getProximityRatio, &LSDAdvanceImpl::setProximityRatio },
             { "mergeThreshold", &LSDAdvanceImpl::getMergeThreshold, &LSDAdvanceImpl::setMergeThreshold },
             { "maxPerpendicularOffset", &LSDAdvanceImpl::getMaxPerpendicularOffset, &LSDAdvanceImpl::setMaxPerpendicularOffset },
+            { "fldDistanceThreshold", &LSDAdvanceImpl::getFldDistanceThreshold, &LSDAdvanceImpl::setFldDistanceThreshold },
+            { "fldCannyThreshold1", &LSDAdvanceImpl::getFldCannyThreshold1, &LSDAdvanceImpl::setFldCannyThreshold1 },
+            { "fldCannyThreshold2", &LSDAdvanceImpl::getFldCannyThreshold2, &LSDAdvanceImpl::setFldCannyThreshold2 },
+            { "edSigma", &LSDAdvanceImpl::getEdSigma, &LSDAdvanceImpl::setEdSigma },
+            { "edLineFitErrorThreshold", &LSDAdvanceImpl::getEdLineFitErrorThreshold, &LSDAdvanceImpl::setEdLineFitErrorThreshold },
+            { "edMaxDistanceBetweenTwoLines", &LSDAdvanceImpl::getEdMaxDistanceBetweenTwoLines, &LSDAdvanceImpl::setEdMaxDistanceBetweenTwoLines },
+            { "edMaxErrorThreshold", &LSDAdvanceImpl::getEdMaxErrorThreshold, &LSDAdvanceImpl::setEdMaxErrorThreshold },
+        };
+        return params;
+    }
+    static const std::vector<BoolParam>& boolParams()
+    {
+        static const std::vector<BoolParam> params = {
+            { "fldDoMerge", &LSDAdvanceImpl::getFldDoMerge, &LSDAdvanceImpl::setFldDoMerge },
+            { "edNfaValidation", &LSDAdvanceImpl::getEdNfaValidation, &LSDAdvanceImpl::setEdNfaValidation },
         };
         return params;
     }
 
     void baseDetectorChanged()
     {
-        baseLsd.release();
+        baseSegments.release();
         reset();
     }
 
@@ -393,7 +518,18 @@ private:
     lsda::GroupingParams grouping;
     lsda::MergeParams merging;
 
-    Ptr<LineSegmentDetector> baseLsd;
+    int baseDetector = BASE_LSD;
+    lsda::FldParams fld;
+    lsda::EdParams ed;
+    Ptr<lsda::BaseSegmentDetector> baseSegments;  // built on first use after a base parameter changes
+    // Buffers of the stages, kept from frame to frame so that a sequence does not allocate.
+    struct FrameWorkspace
+    {
+        std::vector<Vec4f> base, work, out;
+        lsda::SegmentGroups groups;
+        lsda::GroupingWorkspace grouping;
+        lsda::MergeWorkspace merging;
+    } frame;
     int framesSeen = 0;
     int keptCounts[2] = { 0, 0 };  // kept by stage 1 in frames k-1 and k-2
     LSDAdvanceStats lastStats;

@@ -29,48 +29,25 @@ bool binsPair(int a, int b, int bins, bool neighbourBins)
 
 // Union-find whose root is always the smallest index, so that group order does not depend
 // on the order in which adjacent pairs are found.
-struct DisjointSets
+int findRoot(std::vector<int>& parent, int i)
 {
-    std::vector<int> parent;
+    while (parent[i] != i)
+    {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
 
-    explicit DisjointSets(int n) : parent(n)
-    {
-        for (int i = 0; i < n; i++)
-            parent[i] = i;
-    }
-    int find(int i)
-    {
-        while (parent[i] != i)
-        {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        return i;
-    }
-    void unite(int a, int b)
-    {
-        a = find(a);
-        b = find(b);
-        if (a < b)
-            parent[b] = a;
-        else if (b < a)
-            parent[a] = b;
-    }
-};
-
-// An endpoint filed under its grid cell. Cells are squares of the adjacency distance, so two
-// endpoints closer than it are in the same or in neighbouring cells: each endpoint is compared
-// with the endpoints of 9 cells only, never with all of them.
-struct CellEntry
+void unite(std::vector<int>& parent, int a, int b)
 {
-    int64 cell;
-    int endpoint;  // 2 * segment + (0 for the start, 1 for the end)
-
-    bool operator<(const CellEntry& o) const
-    {
-        return cell < o.cell || (cell == o.cell && endpoint < o.endpoint);
-    }
-};
+    a = findRoot(parent, a);
+    b = findRoot(parent, b);
+    if (a < b)
+        parent[b] = a;
+    else if (b < a)
+        parent[a] = b;
+}
 
 // Cells fit in 32 bits: coordinates are finite and bounded (checked by the caller), and the
 // cell size is at least 0.1 px.
@@ -78,6 +55,50 @@ int64 cellKey(int64 cx, int64 cy)
 {
     return (int64)(((uint64)(uint32_t)cx << 32) | (uint64)(uint32_t)cy);
 }
+
+// Open-addressing hash table from a cell key to a dense cell number. A hash instead of a sorted
+// array or a dense image-sized grid: O(1) per look-up whatever the spread of the coordinates.
+class CellTable
+{
+public:
+    CellTable(std::vector<int64>& keyBuffer, std::vector<int>& cellBuffer, int entries)
+        : keys(keyBuffer), cells(cellBuffer)
+    {
+        size_t capacity = 16;
+        while (capacity < 2 * (size_t)entries)
+            capacity *= 2;
+        mask = capacity - 1;
+        keys.resize(capacity);
+        cells.assign(capacity, -1);
+    }
+    // Dense number of the cell, -1 when absent.
+    int find(int64 key) const
+    {
+        for (size_t slot = hash(key);; slot = (slot + 1) & mask)
+            if (cells[slot] < 0 || keys[slot] == key)
+                return cells[slot];
+    }
+    // Dense number of the cell, given the next free number when absent.
+    int insert(int64 key, int& cellCount)
+    {
+        size_t slot = hash(key);
+        while (cells[slot] >= 0 && keys[slot] != key)
+            slot = (slot + 1) & mask;
+        if (cells[slot] < 0)
+        {
+            keys[slot] = key;
+            cells[slot] = cellCount++;
+        }
+        return cells[slot];
+    }
+
+private:
+    size_t hash(int64 key) const { return (size_t)(((uint64)key * 0x9E3779B97F4A7C15ull) >> 29) & mask; }
+
+    std::vector<int64>& keys;
+    std::vector<int>& cells;
+    size_t mask;
+};
 
 } // namespace
 
@@ -92,7 +113,7 @@ int angleBin(const Vec4f& s, double binWidth)
 }
 
 void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
-                   SegmentGroups& groups)
+                   SegmentGroups& groups, GroupingWorkspace& ws)
 {
     CV_CheckGT(params.angleBinWidth, 0.0, "angle bins have a width");
     CV_CheckGE(params.endpointDistance, 0.1, "grid cells are at least 0.1 px");
@@ -101,9 +122,9 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
     const double cellSize = params.endpointDistance;
     const double maxDistSq = cellSize * cellSize;
 
-    std::vector<int> bin(n);
+    ws.bin.resize(n);
     for (int i = 0; i < n; i++)
-        bin[i] = angleBin(segments[i], params.angleBinWidth);
+        ws.bin[i] = angleBin(segments[i], params.angleBinWidth);
 
     auto endpoint = [&](int e) {
         const Vec4f& s = segments[e >> 1];
@@ -113,15 +134,30 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         return std::make_pair((int64)std::floor(p.x / cellSize), (int64)std::floor(p.y / cellSize));
     };
 
-    std::vector<CellEntry> grid(2 * (size_t)n);
+    // Endpoints filed under their grid cell (compressed rows, endpoints in increasing order).
+    // Cells are squares of the adjacency distance, so two endpoints closer than it are in the
+    // same or in neighbouring cells: each endpoint is compared with the endpoints of 9 cells only.
+    CellTable table(ws.tableKeys, ws.tableCells, 2 * n);
+    int cellCount = 0;
+    ws.cellOfEndpoint.resize(2 * (size_t)n);
     for (int e = 0; e < 2 * n; e++)
     {
         const std::pair<int64, int64> c = cellOf(endpoint(e));
-        grid[e] = { cellKey(c.first, c.second), e };
+        ws.cellOfEndpoint[e] = table.insert(cellKey(c.first, c.second), cellCount);
     }
-    std::sort(grid.begin(), grid.end());
+    ws.cellStart.assign(cellCount + 1, 0);
+    for (int e = 0; e < 2 * n; e++)
+        ws.cellStart[ws.cellOfEndpoint[e] + 1]++;
+    for (int c = 0; c < cellCount; c++)
+        ws.cellStart[c + 1] += ws.cellStart[c];
+    ws.fill.assign(ws.cellStart.begin(), ws.cellStart.end() - 1);
+    ws.cellEndpoints.resize(2 * (size_t)n);
+    for (int e = 0; e < 2 * n; e++)
+        ws.cellEndpoints[ws.fill[ws.cellOfEndpoint[e]]++] = e;
 
-    DisjointSets sets(n);
+    ws.parent.resize(n);
+    for (int i = 0; i < n; i++)
+        ws.parent[i] = i;
     for (int e = 0; e < 2 * n; e++)
     {
         const int seg = e >> 1;
@@ -130,42 +166,50 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         for (int dy = -1; dy <= 1; dy++)
             for (int dx = -1; dx <= 1; dx++)
             {
-                const CellEntry first = { cellKey(c.first + dx, c.second + dy), 0 };
-                for (auto it = std::lower_bound(grid.begin(), grid.end(), first);
-                     it != grid.end() && it->cell == first.cell; ++it)
+                const int cell = table.find(cellKey(c.first + dx, c.second + dy));
+                if (cell < 0)
+                    continue;
+                for (int k = ws.cellStart[cell]; k < ws.cellStart[cell + 1]; k++)
                 {
-                    const int other = it->endpoint >> 1;
-                    if (other <= seg || !binsPair(bin[seg], bin[other], bins, params.neighbourBins))
+                    const int other = ws.cellEndpoints[k] >> 1;
+                    if (other <= seg || !binsPair(ws.bin[seg], ws.bin[other], bins, params.neighbourBins))
                         continue;
-                    const Point2d d = endpoint(it->endpoint) - p;
+                    const Point2d d = endpoint(ws.cellEndpoints[k]) - p;
                     if (d.dot(d) < maxDistSq)
-                        sets.unite(seg, other);
+                        unite(ws.parent, seg, other);
                 }
             }
     }
 
     // Counting sort of segments by root; roots are smallest members, so groups come out
-    // ordered by their smallest member and members in increasing order.
-    std::vector<int> groupOfRoot(n, -1);
+    // ordered by their smallest member and members in increasing order. The roots' slots of
+    // groupOf hold their group number once visited (a root is visited before its members).
     groups.offsets.assign(1, 0);
-    std::vector<int> groupOf(n);
+    ws.groupOf.resize(n);
     for (int i = 0; i < n; i++)
     {
-        const int root = sets.find(i);
-        if (groupOfRoot[root] < 0)
+        const int root = findRoot(ws.parent, i);
+        if (root == i)
         {
-            groupOfRoot[root] = groups.count();
+            ws.groupOf[i] = groups.count();
             groups.offsets.push_back(0);
         }
-        groupOf[i] = groupOfRoot[root];
-        groups.offsets[groupOf[i] + 1]++;
+        else
+            ws.groupOf[i] = ws.groupOf[root];
+        groups.offsets[ws.groupOf[i] + 1]++;
     }
     for (int g = 0; g < groups.count(); g++)
         groups.offsets[g + 1] += groups.offsets[g];
     groups.members.resize(n);
-    std::vector<int> fill(groups.offsets.begin(), groups.offsets.end() - 1);
+    ws.fill.assign(groups.offsets.begin(), groups.offsets.end() - 1);
     for (int i = 0; i < n; i++)
-        groups.members[fill[groupOf[i]]++] = i;
+        groups.members[ws.fill[ws.groupOf[i]]++] = i;
+}
+
+void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params, SegmentGroups& groups)
+{
+    GroupingWorkspace workspace;
+    groupSegments(segments, params, groups, workspace);
 }
 
 }}} // namespace cv::ximgproc::lsda

@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "opencv2/ximgproc/edge_drawing.hpp"
 
 namespace opencv_test { namespace {
 
@@ -49,6 +50,13 @@ std::vector<RealParameter> realParameters()
         { "proximityRatio", &LSDAdvance::setProximityRatio, &LSDAdvance::getProximityRatio, 1.0, { 0.001, 10 }, { 0.0, 10.5, kNaN } },
         { "mergeThreshold", &LSDAdvance::setMergeThreshold, &LSDAdvance::getMergeThreshold, 0.6, { 0.0, 1.0 }, { -0.1, 1.1, kNaN } },
         { "maxPerpendicularOffset", &LSDAdvance::setMaxPerpendicularOffset, &LSDAdvance::getMaxPerpendicularOffset, 1.5, { 0.0, 100 }, { -0.1, 101, kNaN, kInf } },
+        { "fldDistanceThreshold", &LSDAdvance::setFldDistanceThreshold, &LSDAdvance::getFldDistanceThreshold, 1.414213562, { 100, 0.5 }, { 0.0, -1, 100.5, kNaN } },
+        { "fldCannyThreshold1", &LSDAdvance::setFldCannyThreshold1, &LSDAdvance::getFldCannyThreshold1, 50, { 100000, 0.5 }, { 0.0, -1, 100001, kInf } },
+        { "fldCannyThreshold2", &LSDAdvance::setFldCannyThreshold2, &LSDAdvance::getFldCannyThreshold2, 50, { 100000, 0.5 }, { 0.0, -1, 100001, kNaN } },
+        { "edSigma", &LSDAdvance::setEdSigma, &LSDAdvance::getEdSigma, 1.0, { 0.0, 100 }, { -0.1, 100.5, kNaN } },
+        { "edLineFitErrorThreshold", &LSDAdvance::setEdLineFitErrorThreshold, &LSDAdvance::getEdLineFitErrorThreshold, 1.0, { 100, 0.5 }, { 0.0, 101, kNaN } },
+        { "edMaxDistanceBetweenTwoLines", &LSDAdvance::setEdMaxDistanceBetweenTwoLines, &LSDAdvance::getEdMaxDistanceBetweenTwoLines, 6.0, { 1000, 0.5 }, { 0.0, 1001, kInf } },
+        { "edMaxErrorThreshold", &LSDAdvance::setEdMaxErrorThreshold, &LSDAdvance::getEdMaxErrorThreshold, 1.3, { 100, 0.5 }, { 0.0, -2, 101, kNaN } },
     };
 }
 
@@ -70,6 +78,33 @@ std::vector<IntParameter> intParameters()
           LSDAdvance::MERGE_LONGEST_FIRST, { LSDAdvance::MERGE_NONE, LSDAdvance::MERGE_BASELINES }, { -1, 3 } },
         { "stageOrder", &LSDAdvance::setStageOrder, &LSDAdvance::getStageOrder,
           LSDAdvance::MERGE_THEN_FILTER, { LSDAdvance::FILTER_THEN_MERGE }, { -1, 2 } },
+        { "baseDetector", &LSDAdvance::setBaseDetector, &LSDAdvance::getBaseDetector, LSDAdvance::BASE_LSD,
+          { LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES }, { -1, 3 } },
+        { "fldLengthThreshold", &LSDAdvance::setFldLengthThreshold, &LSDAdvance::getFldLengthThreshold, 10, { 1, 100000, 25 }, { 0, -3, 100001 } },
+        { "fldCannyApertureSize", &LSDAdvance::setFldCannyApertureSize, &LSDAdvance::getFldCannyApertureSize, 3, { 7, 5 }, { 0, 1, 4, 9, -3 } },
+        { "edGradientOperator", &LSDAdvance::setEdGradientOperator, &LSDAdvance::getEdGradientOperator, EdgeDrawing::PREWITT,
+          { EdgeDrawing::SOBEL, EdgeDrawing::SCHARR, EdgeDrawing::LSD }, { -1, 4 } },
+        { "edGradientThreshold", &LSDAdvance::setEdGradientThreshold, &LSDAdvance::getEdGradientThreshold, 20, { 1, 10000, 36 }, { 0, 10001 } },
+        { "edAnchorThreshold", &LSDAdvance::setEdAnchorThreshold, &LSDAdvance::getEdAnchorThreshold, 0, { 10000, 4 }, { -1, 10001 } },
+        { "edScanInterval", &LSDAdvance::setEdScanInterval, &LSDAdvance::getEdScanInterval, 1, { 100, 2 }, { 0, 101 } },
+        { "edMinPathLength", &LSDAdvance::setEdMinPathLength, &LSDAdvance::getEdMinPathLength, 10, { 2, 100000, 15 }, { 1, 0, 100001 } },
+        { "edMinLineLength", &LSDAdvance::setEdMinLineLength, &LSDAdvance::getEdMinLineLength, -1, { -1, 9, 100000, 20 }, { 8, 0, -2, 100001 } },
+    };
+}
+
+struct BoolParameter
+{
+    const char* name;
+    void (LSDAdvance::*set)(bool);
+    bool (LSDAdvance::*get)() const;
+    bool defaultValue;
+};
+
+std::vector<BoolParameter> boolParameters()
+{
+    return {
+        { "fldDoMerge", &LSDAdvance::setFldDoMerge, &LSDAdvance::getFldDoMerge, false },
+        { "edNfaValidation", &LSDAdvance::setEdNfaValidation, &LSDAdvance::getEdNfaValidation, true },
     };
 }
 
@@ -96,6 +131,8 @@ TEST(LSDAdvance_Parameters, defaults_are_the_documented_ones)
         EXPECT_EQ(p.defaultValue, ((*detector).*p.get)()) << p.name;
     for (const IntParameter& p : intParameters())
         EXPECT_EQ(p.defaultValue, ((*detector).*p.get)()) << p.name;
+    for (const BoolParameter& p : boolParameters())
+        EXPECT_EQ(p.defaultValue, ((*detector).*p.get)()) << p.name;
 }
 
 TEST(LSDAdvance_Parameters, setters_round_trip_valid_values)
@@ -109,6 +146,12 @@ TEST(LSDAdvance_Parameters, setters_round_trip_valid_values)
         }
     for (const IntParameter& p : intParameters())
         for (int v : p.valid)
+        {
+            ((*detector).*p.set)(v);
+            EXPECT_EQ(v, ((*detector).*p.get)()) << p.name;
+        }
+    for (const BoolParameter& p : boolParameters())
+        for (bool v : { !p.defaultValue, p.defaultValue })
         {
             ((*detector).*p.set)(v);
             EXPECT_EQ(v, ((*detector).*p.get)()) << p.name;
@@ -152,6 +195,8 @@ Ptr<LSDAdvance> detectorWithNonDefaults()
         ((*detector).*p.set)(p.valid[1]);
     for (const IntParameter& p : intParameters())
         ((*detector).*p.set)(p.valid.back());
+    for (const BoolParameter& p : boolParameters())
+        ((*detector).*p.set)(!p.defaultValue);
     return detector;
 }
 
@@ -168,6 +213,8 @@ TEST(LSDAdvance_Parameters, write_read_round_trip_preserves_every_parameter)
     for (const RealParameter& p : realParameters())
         EXPECT_EQ(((*saved).*p.get)(), ((*loaded).*p.get)()) << p.name;
     for (const IntParameter& p : intParameters())
+        EXPECT_EQ(((*saved).*p.get)(), ((*loaded).*p.get)()) << p.name;
+    for (const BoolParameter& p : boolParameters())
         EXPECT_EQ(((*saved).*p.get)(), ((*loaded).*p.get)()) << p.name;
     EXPECT_EQ(String("LSDAdvance"), loaded->getDefaultName());
 }
@@ -190,6 +237,9 @@ TEST(LSDAdvance_Parameters, read_rejects_wrong_types_and_out_of_range_values)
         "%YAML:1.0\n---\nlengthFilterMode: 1.5\n",
         "%YAML:1.0\n---\nendpointDistance: -3\n",
         "%YAML:1.0\n---\nlsdRefine: 9\n",
+        "%YAML:1.0\n---\nedNfaValidation: 2\n",
+        "%YAML:1.0\n---\nfldDoMerge: 0.5\n",
+        "%YAML:1.0\n---\nbaseDetector: 3\n",
     };
     for (const char* text : bad)
     {
@@ -287,6 +337,8 @@ TEST(LSDAdvance_Parameters, user_workflow_set_every_parameter_save_load_and_dete
         ((*configured).*p.set)(p.defaultValue);
     for (const IntParameter& p : intParameters())
         ((*configured).*p.set)(p.defaultValue);
+    for (const BoolParameter& p : boolParameters())
+        ((*configured).*p.set)(p.defaultValue);
     const String path = cv::tempfile(".yml");
     configured->save(path);  // the parameters under a node named getDefaultName()
     Ptr<LSDAdvance> loaded = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE, 3.0, 0.9);
@@ -299,6 +351,8 @@ TEST(LSDAdvance_Parameters, user_workflow_set_every_parameter_save_load_and_dete
     for (const RealParameter& p : realParameters())
         EXPECT_EQ(p.defaultValue, ((*loaded).*p.get)()) << p.name;
     for (const IntParameter& p : intParameters())
+        EXPECT_EQ(p.defaultValue, ((*loaded).*p.get)()) << p.name;
+    for (const BoolParameter& p : boolParameters())
         EXPECT_EQ(p.defaultValue, ((*loaded).*p.get)()) << p.name;
 
     const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);

@@ -9,6 +9,7 @@
 #include "opencv2/lsd_advance.hpp"
 #include "opencv2/imgproc.hpp"
 #include "opencv2/imgcodecs.hpp"
+#include "opencv2/core/utils/filesystem.hpp"
 #include "../src/stages.hpp"
 
 #include <functional>
@@ -29,6 +30,22 @@ inline Vec4f segmentAt(double x, double y, double angleDeg, double length)
 {
     const double a = angleDeg * CV_PI / 180.0;
     return Vec4f((float)x, (float)y, (float)(x + length * std::cos(a)), (float)(y + length * std::sin(a)));
+}
+
+//! Folder `set` of the evaluation data (LSD_ADVANCE_DATA_DIR). When it is missing the test is
+//! skipped, except under CI=true, where it fails.
+inline std::string dataFolder(const char* set)
+{
+    const char* root = getenv("LSD_ADVANCE_DATA_DIR");
+    const char* ci = getenv("CI");
+    const std::string folder = root ? utils::fs::join(root, set) : std::string();
+    if (folder.empty() || !utils::fs::isDirectory(folder))
+    {
+        if (ci && std::string(ci) == "true")
+            CV_Error_(Error::StsError, ("evaluation data %s not found: set LSD_ADVANCE_DATA_DIR to ../shared/data", set));
+        throw SkipTestException(std::string("LSD_ADVANCE_DATA_DIR does not hold ") + set);
+    }
+    return folder;
 }
 
 } // namespace opencv_test

@@ -9,23 +9,8 @@
 #include "test_precomp.hpp"
 #include "opencv2/lsd_advance/evaluation.hpp"
 #include "opencv2/ximgproc.hpp"
-#include "opencv2/core/utils/filesystem.hpp"
 
 namespace opencv_test { namespace {
-
-std::string dataFolder(const char* set)
-{
-    const char* root = getenv("LSD_ADVANCE_DATA_DIR");
-    const char* ci = getenv("CI");
-    const std::string folder = root ? utils::fs::join(root, set) : std::string();
-    if (folder.empty() || !utils::fs::isDirectory(folder))
-    {
-        if (ci && std::string(ci) == "true")
-            CV_Error_(Error::StsError, ("evaluation data %s not found: set LSD_ADVANCE_DATA_DIR to ../shared/data", set));
-        throw SkipTestException(std::string("LSD_ADVANCE_DATA_DIR does not hold ") + set);
-    }
-    return folder;
-}
 
 typedef std::function<void(const Mat&, std::vector<Vec4f>&)> Detect;
 

@@ -109,6 +109,131 @@ images in name order, `calib.txt` (rows of 12 numbers, optionally prefixed `P0:`
 */
 CV_EXPORTS_W SequenceData loadSequence(const String& folder);
 
+/** @brief Line matching under a known homography: match precision, repeatability and
+localisation error (doc/matching.md).
+
+A segment a of image 1 and a segment b of image 2 correspond when a, mapped by H, lies within
+maxDistance of b: both mapped endpoints are at most maxDistance from b's supporting line, and
+the mapped segment and b overlap along that line (their projections on it share a positive
+length).
+*/
+struct CV_EXPORTS_W_SIMPLE HomographyMatchScore
+{
+    HomographyMatchScore()
+        : matches(0), correct(0), precision(0), repeatability(0), localisationError(0), repeated(0),
+          visible(0)
+    {}
+
+    CV_PROP_RW int matches;               //!< matches evaluated
+    CV_PROP_RW int correct;               //!< matches whose two segments correspond
+    CV_PROP_RW double precision;          //!< correct / matches (0 without matches)
+    /** share of the visible segments (those whose mapped endpoints both fall inside the other
+    image) of both images that have a corresponding segment in the other image (0 when none is
+    visible) */
+    CV_PROP_RW double repeatability;
+    /** mean, over the repeated segments, of the smallest mean perpendicular distance of the two
+    mapped endpoints to a corresponding segment's line, pixels (0 when none is repeated) */
+    CV_PROP_RW double localisationError;
+    CV_PROP_RW int repeated;              //!< visible segments, of both images, with a counterpart
+    CV_PROP_RW int visible;               //!< visible segments of both images
+};
+
+/** @brief Whether segment a of image 1, mapped by the homography H (image 1 -> image 2),
+corresponds to segment b of image 2 (see HomographyMatchScore).
+
+@param a Segment (x1, y1, x2, y2) of image 1. @param b Segment of image 2.
+@param H 3x3 homography, CV_32F or CV_64F, mapping image 1 to image 2.
+@param maxDistance Largest perpendicular distance of a mapped endpoint to b's line, pixels, >= 0. Default 3.
+A zero-length b, or an endpoint of a that H sends to infinity, never corresponds.
+*/
+CV_EXPORTS_W bool correspondUnderHomography(const Vec4f& a, const Vec4f& b, InputArray H, double maxDistance = 3.0);
+
+/** @brief Scores line matches between two images related by a homography, with the repeatability
+and localisation error of the two segment sets (the HPatches line protocol, doc/matching.md).
+
+@param segments1 Segments of image 1, N x 1 CV_32FC4 (std::vector<Vec4f>).
+@param segments2 Segments of image 2.
+@param matches Matches, queryIdx into segments1 and trainIdx into segments2 (what
+BinaryDescriptorMatcher::match returns for query = image 1); indices out of range throw.
+@param H 3x3 homography (CV_32F or CV_64F) mapping image 1 to image 2, invertible.
+@param imageSize1 Size of image 1. @param imageSize2 Size of image 2.
+@param maxDistance Correspondence distance in pixels (correspondUnderHomography), >= 0. Default 3.
+*/
+CV_EXPORTS_W HomographyMatchScore evaluateHomographyMatches(InputArray segments1, InputArray segments2,
+                                                            const std::vector<DMatch>& matches, InputArray H,
+                                                            Size imageSize1, Size imageSize2,
+                                                            double maxDistance = 3.0);
+
+/** @brief Verdict of the epipolar check of a line match (checkEpipolar). */
+enum EpipolarVerdict
+{
+    EPIPOLAR_CONSISTENT = 0,    //!< the epipolar interval of a overlaps b
+    EPIPOLAR_INCONSISTENT = 1,  //!< it does not: the match is wrong
+    /** b runs along the epipolar lines (or a's endpoints are the epipole): the intersections
+    are ill-conditioned and the pair cannot be decided */
+    EPIPOLAR_UNDECIDABLE = 2
+};
+
+/** @brief Epipolar consistency of a match between segment a of frame 1 and segment b of frame 2.
+
+The epipolar lines F a1 and F a2 of a's endpoints cut b's supporting line at two points; the
+match is consistent when the interval between them overlaps b, extended by tolerance pixels at
+both ends. When the direction of b is within minAngle of either epipolar line, the pair is
+undecidable. A consistent pair is not proven right: a wrong segment on the same epipolar band
+passes too (doc/matching.md).
+
+@param a Segment of frame 1. @param b Segment of frame 2.
+@param F 3x3 fundamental matrix (CV_32F or CV_64F) with x2^T F x1 = 0.
+@param tolerance Pixels, >= 0. Default 2. @param minAngle Degrees, in [0, 90). Default 5.
+@return One of EpipolarVerdict.
+*/
+CV_EXPORTS_W int checkEpipolar(const Vec4f& a, const Vec4f& b, InputArray F, double tolerance = 2.0,
+                               double minAngle = 5.0);
+
+/** @brief Fundamental matrix between two frames of a calibrated sequence (KITTI odometry format).
+
+@param P 3x4 projection matrix K [I | 0] of the camera (SequenceData::P0); its left 3x3 block is K.
+@param pose1 3x4 [R | t] of frame 1: camera-1 coordinates to world coordinates.
+@param pose2 3x4 [R | t] of frame 2.
+@return F (CV_64F) such that x2^T F x1 = 0 for the pixels x1, x2 of one world point. Throws
+when the two poses share their camera centre (F is then undefined).
+*/
+CV_EXPORTS_W Mat fundamentalFromPoses(InputArray P, InputArray pose1, InputArray pose2);
+
+/** @brief Epipolar scores of line matches between two frames (checkEpipolar on each match). */
+struct CV_EXPORTS_W_SIMPLE EpipolarMatchScore
+{
+    EpipolarMatchScore() : matches(0), consistent(0), inconsistent(0), undecidable(0), precision(0) {}
+
+    CV_PROP_RW int matches;       //!< matches evaluated
+    CV_PROP_RW int consistent;    //!< EPIPOLAR_CONSISTENT
+    CV_PROP_RW int inconsistent;  //!< EPIPOLAR_INCONSISTENT
+    CV_PROP_RW int undecidable;   //!< EPIPOLAR_UNDECIDABLE, counted apart
+    CV_PROP_RW double precision;  //!< consistent / (consistent + inconsistent), 0 when both are 0
+};
+
+/** @brief Scores matches (queryIdx into segments1, trainIdx into segments2) with checkEpipolar. */
+CV_EXPORTS_W EpipolarMatchScore evaluateEpipolarMatches(InputArray segments1, InputArray segments2,
+                                                        const std::vector<DMatch>& matches, InputArray F,
+                                                        double tolerance = 2.0, double minAngle = 5.0);
+
+/** @brief Reads a 3x3 homography: a text file of 9 numbers (3 rows, HPatches' `H_1_k`), or an
+OpenCV FileStorage file (.xml, .yml, .yaml, .json) whose first top-level node is the 3x3 matrix
+(OpenCV's `H1to3p.xml`). Returns CV_64F; throws on anything else. */
+CV_EXPORTS_W Mat readHomography(const String& path);
+
+/** @brief A pair of images related by a homography. */
+struct CV_EXPORTS_W_SIMPLE HomographyPair
+{
+    CV_PROP_RW String image1Path;  //!< reference image
+    CV_PROP_RW String image2Path;  //!< transformed image
+    CV_PROP_RW Mat H;              //!< 3x3 CV_64F, maps image 1 to image 2
+};
+
+/** @brief Loads an HPatches-style folder: `1.ppm` with `k.ppm` and `H_1_k` for every k >= 2 that
+has both, in increasing k. Throws when `1.ppm` or every pair is missing. */
+CV_EXPORTS_W std::vector<HomographyPair> loadHomographyPairs(const String& folder);
+
 //! @} lsd_advance
 
 }} // namespace cv::ximgproc

@@ -7,6 +7,9 @@
 
 #include "opencv2/core.hpp"
 #include "opencv2/imgproc.hpp"  // cv::LineSegmentDetectorModes for setLsdRefine
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+#include "opencv2/line_descriptor.hpp"
+#endif
 
 namespace cv {
 namespace ximgproc {
@@ -45,7 +48,8 @@ An example comparing LSDAdvance with OpenCV's LineSegmentDetector on building.jp
 
 /** @brief Line segment detector that returns fewer, longer segments than LSD (@cite Guan2026).
 
-The segments of OpenCV's LineSegmentDetector (@cite Rafael12) are post-processed in three stages:
+The segments of OpenCV's LineSegmentDetector (@cite Rafael12), or of FastLineDetector or EDLines
+(see BaseDetector), are post-processed in three stages:
 1. **Adaptive length suppression**: with @f$\mu@f$ and @f$\sigma@f$ the mean and population
    standard deviation of the segment lengths of the frame, segments shorter than
    @f$L_{min} = \alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$ (the paper's rule; by default
@@ -94,11 +98,29 @@ darker side on its right. Fused segments keep the orientation of their baseline.
 
 **Coordinates.** OpenCV's pixel-centre convention: pixel (i, j) is centred at (i, j).
 
-**Input.** 8-bit images with 1 channel (gray), 3 channels (BGR) or 4 channels (BGRA); colour
-images are converted to gray. Any other type, and an empty image, throw cv::Exception.
+**Input.** 8-bit images with 1 channel (gray), 3 channels (BGR) or 4 channels (BGRA, alpha
+ignored), of any size from 1 x 1 and any layout (ROI views, UMat); colour images are converted
+to gray. Images too small for a segment give none. Like OpenCV's LSD, other depths (8S, 16U,
+16S, 32S, 16F, 32F, 64F) and 2-channel images are rejected, not converted: scale them to 8 bits
+first (Mat::convertTo). An empty image or another type throws cv::Exception naming the type
+received and the accepted ones. A rejected call (image, segments, setter or read()) changes
+nothing: neither the parameters nor the sequence state.
 
-**Threads.** Separate instances may run on separate threads. One instance keeps the sequence
-state and caches its base detector, so it must not be used from two threads at once.
+**Output.** Coordinates are finite. Like LSD's, endpoints may lie outside the image: LSD
+extends a segment to the ends of its region's rectangle (measured: up to 8.5 px with the
+defaults on the 203 frames of the evaluation data, where merging never reached farther out).
+
+**Memory.** The default base (LSD) needs about 32 bytes per pixel at lsdScale 1 (its copies of
+the image, gradient angles and norms, and its ordered pixel list) and 20 at scale 0.8: a
+10000 x 10000 image peaks at 3.2 GB resident (measured). Stages 1-3 need memory proportional
+to the number of segments. Memory does not grow over a sequence: 20,000 frames through one
+object keep resident memory flat after warm-up (test LSDAdvance_LongSequence).
+
+**Threads.** Separate instances may run on separate threads at once and give the results they
+give one after the other; results do not depend on cv::setNumThreads (bit-identical). One
+instance is NOT safe to use from two threads at once: it holds the sequence state (the kept
+counts of the previous frames), its base detector and reused buffers. Give each thread its own
+instance, or serialize the calls.
 */
 class CV_EXPORTS_W LSDAdvance : public Algorithm
 {
@@ -170,9 +192,28 @@ public:
         ANGLE_BINS_NEIGHBOURS = 1  //!< also the two neighbouring bins, wrapping 180 deg to 0 (default)
     };
 
+    /** @brief The detector of stage 0, whose segments stages 1-3 post-process.
+
+    Every base returns segments oriented brighter side on the left: LSD and FLD orient them so
+    themselves; EDLines orients a segment along the edge it traced, so LSDAdvance turns each
+    EDLines segment round when the image is brighter on its right (mean of 5 samples 2 px either
+    side). The orientation matters to stage 3: its direction term is the cosine between the
+    directed segments, so two pieces of one edge pointing opposite ways would not fuse. */
+    enum BaseDetector
+    {
+        BASE_LSD = 0,     //!< OpenCV's cv::LineSegmentDetector with the lsd* parameters (default)
+        /** cv::ximgproc::FastLineDetector with the fld* parameters: Canny edges and line fitting,
+        a few times faster than LSD */
+        BASE_FLD = 1,
+        /** EDLines of cv::ximgproc::EdgeDrawing with the ed* parameters: edge drawing, then line
+        fitting with NFA validation, the fastest of the three */
+        BASE_EDLINES = 2
+    };
+
     /** @brief Detects line segments.
 
-    @param image 8-bit gray (CV_8UC1), BGR (CV_8UC3) or BGRA (CV_8UC4) image, not empty.
+    @param image 8-bit gray (CV_8UC1), BGR (CV_8UC3) or BGRA (CV_8UC4) image, not empty, any size
+    and layout (see "Input." in the class description).
     @param lines Output N x 1 array of CV_32FC4 (std::vector<cv::Vec4f> works):
     (x1, y1, x2, y2) per segment, pixel-centre coordinates, oriented as LSD orients them (brighter
     side on the left, see the class description).
@@ -183,13 +224,30 @@ public:
     */
     CV_WRAP virtual void detect(InputArray image, OutputArray lines) = 0;
 
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    /** @brief Detects line segments as KeyLines for line_descriptor's LBD descriptor and matcher.
+
+    @param image As for detect(InputArray, OutputArray).
+    @param keylines Output: one KeyLine per segment that detect(InputArray, OutputArray) returns,
+    in the same order, filled by linesToKeyLines() exactly as
+    cv::line_descriptor::LSDDetector fills octave 0, so that
+    cv::line_descriptor::BinaryDescriptor::compute() and BinaryDescriptorMatcher take them
+    unchanged. `response` ranks them: sort by it, largest first, to keep the N longest lines.
+
+    The call is a frame of the sequence, like detect(InputArray, OutputArray). Present when
+    OpenCV's line_descriptor module is (HAVE_OPENCV_LINE_DESCRIPTOR).
+    */
+    void detect(InputArray image, std::vector<line_descriptor::KeyLine>& keylines);
+#endif
+
     /** @brief Runs the stages after base detection on segments from any detector.
 
     @param segments Input segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), oriented as
     LSD orients them when the orientation of the output matters.
     @param lines Output like detect(). The call is a frame of the sequence, like detect().
 
-    Coordinates must be finite and within [-1e7, 1e7] px; anything else throws.
+    Coordinates must be finite and within [-1e7, 1e7) px; anything else throws, and an empty
+    array gives no lines.
     */
     CV_WRAP virtual void processSegments(InputArray segments, OutputArray lines) = 0;
 
@@ -228,6 +286,75 @@ public:
     /** @brief Number of bins in the pseudo-ordering of gradient modulus, in [1, 65536]. Default 1024. */
     CV_WRAP virtual void setLsdNumBins(int bins) = 0;
     CV_WRAP virtual int getLsdNumBins() const = 0;
+
+    /** @brief Detector of stage 0, one of LSDAdvance::BaseDetector. Default BASE_LSD. Each base
+    has its own parameters (lsd*, fld*, ed*); those of the other bases are kept but unused. */
+    CV_WRAP virtual void setBaseDetector(int detector) = 0;
+    CV_WRAP virtual int getBaseDetector() const = 0;
+
+    /** @brief BASE_FLD: segments shorter than this are discarded, in pixels, in [1, 100000].
+    Default 10 (FastLineDetector's). */
+    CV_WRAP virtual void setFldLengthThreshold(int pixels) = 0;
+    CV_WRAP virtual int getFldLengthThreshold() const = 0;
+    /** @brief BASE_FLD: a point farther than this from a hypothesis line is an outlier, in
+    pixels, in (0, 100]. Default 1.414213562 (FastLineDetector's). */
+    CV_WRAP virtual void setFldDistanceThreshold(double pixels) = 0;
+    CV_WRAP virtual double getFldDistanceThreshold() const = 0;
+    /** @brief BASE_FLD: first hysteresis threshold of Canny, in (0, 100000]. Default 50. */
+    CV_WRAP virtual void setFldCannyThreshold1(double threshold) = 0;
+    CV_WRAP virtual double getFldCannyThreshold1() const = 0;
+    /** @brief BASE_FLD: second hysteresis threshold of Canny, in (0, 100000]. Default 50. */
+    CV_WRAP virtual void setFldCannyThreshold2(double threshold) = 0;
+    CV_WRAP virtual double getFldCannyThreshold2() const = 0;
+    /** @brief BASE_FLD: aperture of the Sobel operator of Canny: 3, 5 or 7. Default 3. */
+    CV_WRAP virtual void setFldCannyApertureSize(int size) = 0;
+    CV_WRAP virtual int getFldCannyApertureSize() const = 0;
+    /** @brief BASE_FLD: FastLineDetector's own incremental merging of segments. Default false
+    (stage 3 merges; FLD's merging costs about 20 times its detection, README "Results"). */
+    CV_WRAP virtual void setFldDoMerge(bool merge) = 0;
+    CV_WRAP virtual bool getFldDoMerge() const = 0;
+
+    /** @brief BASE_EDLINES: gradient operator, one of cv::ximgproc::EdgeDrawing::GradientOperator
+    (PREWITT = 0, SOBEL = 1, SCHARR = 2, LSD = 3). Default PREWITT. */
+    CV_WRAP virtual void setEdGradientOperator(int op) = 0;
+    CV_WRAP virtual int getEdGradientOperator() const = 0;
+    /** @brief BASE_EDLINES: pixels whose gradient is below this are not edges, in [1, 10000]
+    (gray levels summed over the operator). Default 20. */
+    CV_WRAP virtual void setEdGradientThreshold(int threshold) = 0;
+    CV_WRAP virtual int getEdGradientThreshold() const = 0;
+    /** @brief BASE_EDLINES: an anchor's gradient exceeds its neighbours' by more than this, in
+    [0, 10000]. Default 0. */
+    CV_WRAP virtual void setEdAnchorThreshold(int threshold) = 0;
+    CV_WRAP virtual int getEdAnchorThreshold() const = 0;
+    /** @brief BASE_EDLINES: anchors are sought on every n-th row and column, in [1, 100]. Default 1. */
+    CV_WRAP virtual void setEdScanInterval(int interval) = 0;
+    CV_WRAP virtual int getEdScanInterval() const = 0;
+    /** @brief BASE_EDLINES: shortest edge chain kept, in pixels, in [2, 100000]. Default 10. */
+    CV_WRAP virtual void setEdMinPathLength(int pixels) = 0;
+    CV_WRAP virtual int getEdMinPathLength() const = 0;
+    /** @brief BASE_EDLINES: sigma of the Gaussian smoothing before the gradient, in [0, 100];
+    below 1 the image is not smoothed. Default 1.0. */
+    CV_WRAP virtual void setEdSigma(double sigma) = 0;
+    CV_WRAP virtual double getEdSigma() const = 0;
+    /** @brief BASE_EDLINES: keep only lines validated by the number of false alarms. Default true. */
+    CV_WRAP virtual void setEdNfaValidation(bool validate) = 0;
+    CV_WRAP virtual bool getEdNfaValidation() const = 0;
+    /** @brief BASE_EDLINES: shortest line fitted, in pixels: -1 (default) computes it from the
+    image size as EdgeDrawing does, otherwise in [9, 100000] (EdgeDrawing never fits shorter). */
+    CV_WRAP virtual void setEdMinLineLength(int pixels) = 0;
+    CV_WRAP virtual int getEdMinLineLength() const = 0;
+    /** @brief BASE_EDLINES: largest distance of an edge pixel to its fitted line, in pixels, in
+    (0, 100]. Default 1.0. */
+    CV_WRAP virtual void setEdLineFitErrorThreshold(double pixels) = 0;
+    CV_WRAP virtual double getEdLineFitErrorThreshold() const = 0;
+    /** @brief BASE_EDLINES: EdgeDrawing joins two collinear lines whose ends are closer than
+    this, in pixels, in (0, 1000]. Default 6.0. */
+    CV_WRAP virtual void setEdMaxDistanceBetweenTwoLines(double pixels) = 0;
+    CV_WRAP virtual double getEdMaxDistanceBetweenTwoLines() const = 0;
+    /** @brief BASE_EDLINES: ... when the joined line fits both within this error, in pixels, in
+    (0, 100]. Default 1.3. */
+    CV_WRAP virtual void setEdMaxErrorThreshold(double pixels) = 0;
+    CV_WRAP virtual double getEdMaxErrorThreshold() const = 0;
 
     /** @brief Stage 1 mode, one of LSDAdvance::LengthFilterMode. Default LENGTH_FILTER_INTERFRAME. */
     CV_WRAP virtual void setLengthFilterMode(int mode) = 0;
@@ -294,6 +421,32 @@ public:
 CV_EXPORTS_W Ptr<LSDAdvance> createLSDAdvance(int lengthFilterMode = LSDAdvance::LENGTH_FILTER_INTERFRAME,
                                               double endpointDistance = 10.0,
                                               double mergeThreshold = 0.6);
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+/** @brief Converts segments to KeyLines of octave 0, field by field as
+cv::line_descriptor::LSDDetector does.
+
+@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), (x1, y1, x2, y2) in
+pixels, finite.
+@param imageSize Size of the image they were detected in, both sides at least 1 px.
+@param keylines Output, one KeyLine per segment in the same order. Each coordinate is first clamped
+as LSDDetector clamps it: below 0 it becomes 0, at or beyond the width (height) it becomes
+width - 1 (height - 1); then `startPoint*` and
+`sPointInOctave*` are the first endpoint, `endPoint*` and `ePointInOctave*` the second, `pt` the
+midpoint, `lineLength` the length in pixels, `angle` = atan2(dy, dx) in radians in (-pi, pi],
+`size` = dx * dy (LSDDetector's definition, signed), `numOfPixels` the number of pixels of the
+8-connected digital line between the endpoints, `octave` 0, `class_id` the index of the segment,
+and `response` = lineLength / max(width, height), in [0, sqrt(2)]: the longer the line, the
+higher, so it ranks lines by the length that makes them stable to track and distinctive to
+describe.
+*/
+CV_EXPORTS void linesToKeyLines(InputArray lines, Size imageSize, std::vector<line_descriptor::KeyLine>& keylines);
+
+/** @brief Converts KeyLines back to segments (x1, y1, x2, y2) = (startPointX, startPointY,
+endPointX, endPointY), in the same order, as N x 1 CV_32FC4 (std::vector<cv::Vec4f> works).
+The octave copies are ignored: the full-resolution endpoints are used whatever the octave. */
+CV_EXPORTS void keyLinesToLines(const std::vector<line_descriptor::KeyLine>& keylines, OutputArray lines);
+#endif
 
 //! @} lsd_advance
 

@@ -1,0 +1,285 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// libFuzzer target: arbitrary bytes -> an image of arbitrary size, type and layout, a parameter
+// set (through read(), so that every persisted parameter takes part, with bad values too), a few
+// frames of detect() (every output overload), processSegments() on arbitrary floats, and the
+// evaluation API. Bad input may only throw cv::Exception; anything else (another exception, a
+// crash, a sanitizer report, a broken output invariant) aborts and is a finding.
+// Build and run: scripts/fuzz.sh.
+
+#include "opencv2/lsd_advance.hpp"
+#include "opencv2/lsd_advance/evaluation.hpp"
+#include "opencv2/imgproc.hpp"
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace cv;
+using namespace cv::ximgproc;
+
+namespace {
+
+void fail(const char* what, double value = 0)
+{
+    std::fprintf(stderr, "fuzz_lsd_advance: invariant broken: %s (%g)\n", what, value);
+    std::abort();
+}
+
+// The persisted parameter names, read from what write() produces: new parameters take part
+// without changing this file.
+const std::vector<std::string>& parameterNames()
+{
+    static const std::vector<std::string> names = [] {
+        FileStorage out("params.yml", FileStorage::WRITE | FileStorage::MEMORY);
+        createLSDAdvance()->write(out);
+        const String text = out.releaseAndGetString();
+        FileStorage in(text, FileStorage::READ | FileStorage::MEMORY);
+        std::vector<std::string> keys;
+        for (const FileNode& node : in.root())
+            keys.push_back(node.name());
+        return keys;
+    }();
+    return names;
+}
+
+// A YAML value for a parameter: mostly small numbers near the valid ranges, sometimes special
+// values or the wrong type.
+std::string fuzzedValue(FuzzedDataProvider& in)
+{
+    switch (in.ConsumeIntegralInRange<int>(0, 9))
+    {
+    case 0: return ".nan";
+    case 1: return in.ConsumeBool() ? ".inf" : "-.inf";
+    case 2: return format("%d", in.ConsumeIntegral<int>());
+    case 3: return format("%.17g", in.ConsumeFloatingPoint<double>());
+    case 4: return "\"text\"";
+    case 5: return "[ 1, 2 ]";
+    case 6: return format("%d", in.ConsumeIntegralInRange<int>(-2, 12));
+    default: return format("%.6g", in.ConsumeFloatingPointInRange<double>(-2.0, 120.0));
+    }
+}
+
+// Image types: the accepted ones most of the time.
+int fuzzedType(FuzzedDataProvider& in)
+{
+    static const int types[] = { CV_8UC1, CV_8UC1, CV_8UC3, CV_8UC4, CV_8UC2, CV_16UC1, CV_32FC1, CV_64FC1, CV_8SC1, CV_16SC3 };
+    return types[in.ConsumeIntegralInRange<size_t>(0, sizeof(types) / sizeof(types[0]) - 1)];
+}
+
+Mat fuzzedImage(FuzzedDataProvider& in)
+{
+    const int rows = in.ConsumeIntegralInRange<int>(0, 160), cols = in.ConsumeIntegralInRange<int>(0, 160);
+    const int type = fuzzedType(in);
+    // Sometimes a non-continuous view into a larger image.
+    const bool view = in.ConsumeBool();
+    const int pad = view ? in.ConsumeIntegralInRange<int>(1, 7) : 0;
+    Mat full(rows + 2 * pad, cols + 2 * pad, type);
+    const int pattern = in.ConsumeIntegralInRange<int>(0, 3);
+    if (pattern == 0)
+        full.setTo(Scalar::all(in.ConsumeIntegral<uint8_t>()));
+    else if (pattern == 1)
+    {
+        // Rectangles of fuzzed position and intensity on a fuzzed background: real edges.
+        full.setTo(Scalar::all(in.ConsumeIntegral<uint8_t>()));
+        for (int k = in.ConsumeIntegralInRange<int>(1, 6); k > 0; k--)
+        {
+            const Point a(in.ConsumeIntegralInRange<int>(-5, full.cols + 5), in.ConsumeIntegralInRange<int>(-5, full.rows + 5));
+            const Point b(in.ConsumeIntegralInRange<int>(-5, full.cols + 5), in.ConsumeIntegralInRange<int>(-5, full.rows + 5));
+            rectangle(full, a, b, Scalar::all(in.ConsumeIntegral<uint8_t>()), in.ConsumeBool() ? FILLED : 1);
+        }
+    }
+    else if (pattern == 2 && !full.empty())
+        RNG(in.ConsumeIntegral<uint32_t>()).fill(full, RNG::UNIFORM, 0, 256);
+    else
+    {
+        // Raw bytes, repeated over the buffer.
+        const std::vector<uint8_t> bytes = in.ConsumeBytes<uint8_t>(in.ConsumeIntegralInRange<size_t>(1, 512));
+        if (!full.empty() && !bytes.empty())
+            for (int y = 0; y < full.rows; y++)
+            {
+                uint8_t* row = full.ptr<uint8_t>(y);
+                const size_t n = full.cols * full.elemSize();
+                for (size_t i = 0; i < n; i++)
+                    row[i] = bytes[(y * n + i) % bytes.size()];
+            }
+    }
+    return view ? full(Rect(pad, pad, cols, rows)) : full;
+}
+
+void checkLines(const std::vector<Vec4f>& lines, const Size& image, const LSDAdvanceStats& stats)
+{
+    if ((int)lines.size() != stats.outputSegments)
+        fail("lines.size() == stats.outputSegments", (double)lines.size());
+    if (stats.outputSegments > stats.baseSegments)
+        fail("outputSegments <= baseSegments", stats.outputSegments);
+    if (!(stats.alpha >= 0.8 && stats.alpha <= 1.2))
+        fail("alpha in [0.8, 1.2]", stats.alpha);
+    if (!(std::isfinite(stats.minLength) && stats.minLength >= 0))
+        fail("finite minLength >= 0", stats.minLength);
+    // Like LSD's, endpoints may lie outside the image, but never farther than the image's own
+    // extent (a region's rectangle is never wider than the image).
+    for (const Vec4f& l : lines)
+        for (int i = 0; i < 4; i++)
+        {
+            const double extent = i % 2 == 0 ? image.width : image.height;
+            if (!std::isfinite(l[i]) || l[i] < -extent - 1 || l[i] > 2 * extent + 1)
+                fail("finite coordinates near the image", l[i]);
+        }
+}
+
+void fuzzDetector(FuzzedDataProvider& in)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    // Parameters through read(): valid, out of range, non-finite or of the wrong type.
+    std::string yaml = "%YAML:1.0\n---\n";
+    for (const std::string& name : parameterNames())
+        if (in.ConsumeIntegralInRange<int>(0, 3) == 0)
+            yaml += name + ": " + fuzzedValue(in) + "\n";
+    try
+    {
+        FileStorage fs(yaml, FileStorage::READ | FileStorage::MEMORY);
+        detector->read(fs.root());
+    }
+    catch (const cv::Exception&)
+    {
+    }
+
+    const int frames = in.ConsumeIntegralInRange<int>(1, 4);
+    for (int f = 0; f < frames && in.remaining_bytes() > 0; f++)
+    {
+        const Mat image = fuzzedImage(in);
+        const int overload = in.ConsumeIntegralInRange<int>(0, 2);
+        try
+        {
+            std::vector<Vec4f> lines;
+            if (overload == 0)
+                detector->detect(image, lines);
+            else if (overload == 1)
+            {
+                Mat out;
+                detector->detect(image, out);
+                if (!out.empty() && (out.type() != CV_32FC4 || out.cols != 1))
+                    fail("Mat output is N x 1 CV_32FC4", out.type());
+                if (!out.empty())
+                    out.copyTo(lines);
+            }
+            else
+            {
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+                std::vector<line_descriptor::KeyLine> keylines;
+                detector->detect(image, keylines);
+                for (const line_descriptor::KeyLine& k : keylines)
+                    lines.push_back(Vec4f(k.startPointX, k.startPointY, k.endPointX, k.endPointY));
+#else
+                detector->detect(image, lines);
+#endif
+            }
+            checkLines(lines, image.size(), detector->getLastStats());
+        }
+        catch (const cv::Exception&)
+        {
+            const int type = image.type();
+            if (!image.empty() && (type == CV_8UC1 || type == CV_8UC3 || type == CV_8UC4))
+                fail("an accepted image was rejected", type);
+        }
+    }
+
+    // processSegments on arbitrary floats: anything non-finite or beyond 1e7 throws.
+    const size_t count = in.ConsumeIntegralInRange<size_t>(0, 64);
+    std::vector<Vec4f> segments;
+    bool valid = true;
+    for (size_t k = 0; k < count; k++)
+    {
+        Vec4f s;
+        for (int i = 0; i < 4; i++)
+        {
+            s[i] = in.ConsumeBool() ? in.ConsumeFloatingPoint<float>() : in.ConsumeFloatingPointInRange<float>(-5.f, 200.f);
+            valid = valid && std::isfinite(s[i]) && std::abs(s[i]) < 1e7f;
+        }
+        segments.push_back(s);
+    }
+    try
+    {
+        std::vector<Vec4f> lines;
+        detector->processSegments(segments, lines);
+        const LSDAdvanceStats stats = detector->getLastStats();
+        if (!valid)
+            fail("invalid segments were accepted");
+        if ((int)lines.size() != stats.outputSegments || stats.outputSegments > (int)segments.size())
+            fail("processSegments output count", (double)lines.size());
+        for (const Vec4f& l : lines)
+            for (int i = 0; i < 4; i++)
+                if (!std::isfinite(l[i]))
+                    fail("finite processSegments output", l[i]);
+    }
+    catch (const cv::Exception&)
+    {
+        if (valid)
+            fail("valid segments were rejected");
+    }
+}
+
+void fuzzEvaluation(FuzzedDataProvider& in)
+{
+    std::vector<Vec4f> detections, groundTruth;
+    bool bounded = true;
+    for (std::vector<Vec4f>* set : { &detections, &groundTruth })
+        for (size_t k = in.ConsumeIntegralInRange<size_t>(0, 16); k > 0; k--)
+        {
+            Vec4f s;
+            for (int i = 0; i < 4; i++)
+            {
+                s[i] = in.ConsumeBool() ? in.ConsumeFloatingPoint<float>() : in.ConsumeFloatingPointInRange<float>(0.f, 64.f);
+                bounded = bounded && std::isfinite(s[i]) && std::abs(s[i]) <= 1e6f;
+            }
+            set->push_back(s);
+        }
+    StructuralMatchParams params;
+    if (in.ConsumeBool())
+    {
+        params.maxDistance = in.ConsumeFloatingPoint<double>();
+        params.maxAngle = in.ConsumeFloatingPoint<double>();
+        params.minCoverage = in.ConsumeFloatingPoint<double>();
+        params.offset = in.ConsumeFloatingPointInRange<double>(-1e6, 1e6);
+    }
+    try
+    {
+        const StructuralScore s = evaluateStructural(detections, groundTruth, params);
+        // With bounded finite input the scores are ratios of lengths.
+        if (bounded && !(s.precision >= 0 && s.precision <= 1 + 1e-9 && s.recall >= 0 && s.recall <= 1 + 1e-9))
+            fail("precision and recall in [0, 1]", s.precision);
+        if (s.found > s.groundTruthCount)
+            fail("found <= groundTruthCount", s.found);
+    }
+    catch (const cv::Exception&)
+    {
+    }
+    const double share = longSegmentShare(detections, in.ConsumeFloatingPointInRange<double>(0.0, 100.0));
+    if (!(share >= 0 && share <= 1))
+        fail("longSegmentShare in [0, 1]", share);
+    const double f = fScore(in.ConsumeProbability<double>(), in.ConsumeProbability<double>());
+    if (!(f >= 0 && f <= 1))
+        fail("fScore in [0, 1]", f);
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    // OpenCV's own threads are not instrumented; keep every call on this one.
+    static const bool singleThread = (setNumThreads(0), true);
+    (void)singleThread;
+    FuzzedDataProvider in(data, size);
+    if (in.ConsumeBool())
+        fuzzEvaluation(in);
+    fuzzDetector(in);
+    return 0;
+}

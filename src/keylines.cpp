@@ -1,0 +1,85 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Output as line_descriptor KeyLines, so that LBD (BinaryDescriptor) and its matcher take
+// LSDAdvance's segments as they take LSDDetector's.
+
+#include "precomp.hpp"
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+
+namespace cv {
+namespace ximgproc {
+
+using line_descriptor::KeyLine;
+
+namespace {
+
+// LSDDetector's bounds: below 0 -> 0, at or beyond the side -> side - 1 (so a coordinate in
+// [side - 1, side) is kept as it is).
+float clampedCoordinate(float v, int side)
+{
+    return v < 0 ? 0.f : (v >= (float)side ? (float)(side - 1) : v);
+}
+
+} // namespace
+
+void LSDAdvance::detect(InputArray image, std::vector<KeyLine>& keylines)
+{
+    CV_INSTRUMENT_REGION();
+    const Size imageSize = image.size();
+    std::vector<Vec4f> lines;
+    detect(image, lines);
+    linesToKeyLines(lines, imageSize, keylines);
+}
+
+void linesToKeyLines(InputArray linesIn, Size imageSize, std::vector<KeyLine>& keylines)
+{
+    CV_INSTRUMENT_REGION();
+    CV_CheckGE(imageSize.width, 1, "linesToKeyLines: imageSize must be at least 1 x 1 px");
+    CV_CheckGE(imageSize.height, 1, "linesToKeyLines: imageSize must be at least 1 x 1 px");
+    const std::vector<Vec4f> lines = lsda::toSegments(linesIn, "linesToKeyLines: lines");
+    if (!lines.empty() && !checkRange(Mat(lines), true))
+        CV_Error(Error::StsOutOfRange, "linesToKeyLines: segment coordinates must be finite");
+
+    const float longerSide = (float)std::max(imageSize.width, imageSize.height);
+    keylines.clear();
+    keylines.reserve(lines.size());
+    for (size_t i = 0; i < lines.size(); i++)
+    {
+        const float x1 = clampedCoordinate(lines[i][0], imageSize.width);
+        const float y1 = clampedCoordinate(lines[i][1], imageSize.height);
+        const float x2 = clampedCoordinate(lines[i][2], imageSize.width);
+        const float y2 = clampedCoordinate(lines[i][3], imageSize.height);
+        KeyLine kl;
+        kl.startPointX = kl.sPointInOctaveX = x1;
+        kl.startPointY = kl.sPointInOctaveY = y1;
+        kl.endPointX = kl.ePointInOctaveX = x2;
+        kl.endPointY = kl.ePointInOctaveY = y2;
+        kl.lineLength = (float)std::sqrt((double)(x2 - x1) * (x2 - x1) + (double)(y2 - y1) * (y2 - y1));
+        // The digital line LBD samples, counted the way LSDDetector counts it.
+        kl.numOfPixels = LineIterator(imageSize, Point2f(x1, y1), Point2f(x2, y2)).count;
+        kl.angle = std::atan2(y2 - y1, x2 - x1);
+        kl.class_id = (int)i;
+        kl.octave = 0;
+        kl.size = (x2 - x1) * (y2 - y1);
+        kl.response = kl.lineLength / longerSide;
+        kl.pt = Point2f((x1 + x2) / 2, (y1 + y2) / 2);
+        keylines.push_back(kl);
+    }
+}
+
+void keyLinesToLines(const std::vector<KeyLine>& keylines, OutputArray lines)
+{
+    CV_INSTRUMENT_REGION();
+    std::vector<Vec4f> segments;
+    segments.reserve(keylines.size());
+    for (const KeyLine& kl : keylines)
+        segments.push_back(Vec4f(kl.startPointX, kl.startPointY, kl.endPointX, kl.endPointY));
+    Mat(segments).copyTo(lines);
+}
+
+}} // namespace cv::ximgproc
+
+#endif

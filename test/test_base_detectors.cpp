@@ -1,0 +1,267 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Stage 0 on each base detector (LSD, FLD, EDLines): the stages work on all of them, every
+// base parameter is used, and every base returns segments brighter side on the left.
+
+#include "test_precomp.hpp"
+#include "opencv2/ximgproc.hpp"
+
+namespace opencv_test { namespace {
+
+const int kBases[] = { LSDAdvance::BASE_LSD, LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES };
+
+const char* baseName(int base)
+{
+    return base == LSDAdvance::BASE_LSD ? "LSD" : (base == LSDAdvance::BASE_FLD ? "FLD" : "EDLines");
+}
+
+// A bright rectangle (x 120..519, y 100..379) on a dark, slightly noisy background.
+Mat brightRectangle()
+{
+    Mat img(480, 640, CV_8UC1, Scalar(40));
+    rectangle(img, Point(120, 100), Point(519, 379), Scalar(200), FILLED);
+    Mat noise(img.size(), CV_8SC1);
+    RNG rng(7);
+    rng.fill(noise, RNG::NORMAL, 0, 3);
+    cv::add(img, noise, img, noArray(), CV_8U);
+    return img;
+}
+
+// Five bright bars 76 px wide, 8 px apart (x 120..531, y 100..379): their tops are collinear
+// pieces of one line y = 99.5. The gaps are wider than EdgeDrawing's own joining distance (6 px).
+Mat barsWithCollinearTops()
+{
+    Mat img(480, 640, CV_8UC1, Scalar(40));
+    for (int x = 120; x < 540; x += 84)
+        rectangle(img, Point(x, 100), Point(x + 75, 379), Scalar(200), FILLED);
+    return img;
+}
+
+// The rectangle's sides, each directed with the bright inside on its left (y pointing down).
+std::vector<Vec4f> rectangleSides()
+{
+    return { Vec4f(519, 100, 120, 100),    // top: going -x, the inside (below) is on the left
+             Vec4f(120, 100, 120, 379),    // left side: going +y
+             Vec4f(120, 379, 519, 379),    // bottom: going +x
+             Vec4f(519, 379, 519, 100) };  // right side: going -y
+}
+
+// Segments lying within 2 px of the side's line, at most 5 deg off it.
+std::vector<Vec4f> piecesAlong(const std::vector<Vec4f>& lines, const Vec4f& side)
+{
+    const Point2d a(side[0], side[1]), d = Point2d(side[2], side[3]) - a;
+    const Point2d u = d * (1.0 / std::sqrt(d.dot(d)));
+    std::vector<Vec4f> pieces;
+    for (const Vec4f& l : lines)
+    {
+        const Point2d p(l[0], l[1]), q(l[2], l[3]);
+        const double offP = std::abs(u.cross(p - a)), offQ = std::abs(u.cross(q - a));
+        const Point2d e = q - p;
+        const double len = std::sqrt(e.dot(e));
+        if (len > 0 && offP < 2.0 && offQ < 2.0 && std::abs(u.cross(e)) / len < std::sin(5 * CV_PI / 180))
+            pieces.push_back(l);
+    }
+    return pieces;
+}
+
+Ptr<LSDAdvance> onBase(int base, bool stages)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance(stages ? LSDAdvance::LENGTH_FILTER_ADAPTIVE : LSDAdvance::LENGTH_FILTER_NONE);
+    detector->setBaseDetector(base);
+    if (!stages)
+        detector->setMergeStrategy(LSDAdvance::MERGE_NONE);
+    return detector;
+}
+
+TEST(LSDAdvance_BaseDetectors, every_base_finds_the_rectangle_sides_oriented_brighter_left)
+{
+    const Mat img = brightRectangle();
+    for (int base : kBases)
+    {
+        SCOPED_TRACE(baseName(base));
+        std::vector<Vec4f> lines;
+        onBase(base, true)->detect(img, lines);
+        for (const Vec4f& side : rectangleSides())
+        {
+            SCOPED_TRACE(side);
+            const std::vector<Vec4f> pieces = piecesAlong(lines, side);
+            ASSERT_FALSE(pieces.empty());
+            const Point2d d(side[2] - side[0], side[3] - side[1]);
+            double covered = 0;
+            for (const Vec4f& p : pieces)
+            {
+                const Point2d e(p[2] - p[0], p[3] - p[1]);
+                EXPECT_GT(e.dot(d), 0) << "segment " << p << " points against the brighter-left orientation";
+                covered += std::sqrt(e.dot(e));
+            }
+            EXPECT_GT(covered, 0.9 * std::sqrt(d.dot(d)));
+        }
+    }
+}
+
+TEST(LSDAdvance_BaseDetectors, stages_merge_collinear_pieces_into_one_segment_on_every_base)
+{
+    const Mat img = barsWithCollinearTops();
+    const Vec4f top(531, 100, 120, 100);
+    for (int base : kBases)
+    {
+        SCOPED_TRACE(baseName(base));
+        Ptr<LSDAdvance> alone = onBase(base, false), stages = onBase(base, true);
+        // FLD stops up to 6 px short of a corner: 8 px gaps become up to 20 px between its pieces.
+        stages->setEndpointDistance(20);
+        std::vector<Vec4f> baseLines, lines;
+        alone->detect(img, baseLines);
+        stages->detect(img, lines);
+        // The base alone returns the line in pieces: otherwise there is nothing to merge.
+        ASSERT_EQ(5u, piecesAlong(baseLines, top).size());
+        const std::vector<Vec4f> merged = piecesAlong(lines, top);
+        ASSERT_EQ(1u, merged.size());
+        EXPECT_LT(merged[0][2], merged[0][0]) << "brighter side (below) on the left: pointing -x";
+        EXPECT_NEAR(531, merged[0][0], 7.0);
+        EXPECT_NEAR(120, merged[0][2], 7.0);
+        EXPECT_NEAR(99.5, 0.5 * (merged[0][1] + merged[0][3]), 1.0);
+    }
+}
+
+TEST(LSDAdvance_BaseDetectors, edlines_segments_are_turned_brighter_left)
+{
+    // EdgeDrawing itself orients a segment along the edge it traced; some come out reversed.
+    Mat img(400, 400, CV_8UC1, Scalar(50));
+    rectangle(img, Rect(100, 100, 200, 150), Scalar(200), FILLED);
+    circle(img, Point(320, 330), 40, Scalar(220), FILLED);
+    Ptr<EdgeDrawing> ed = createEdgeDrawing();
+    std::vector<Vec4f> raw, oriented = std::vector<Vec4f>();
+    ed->detectEdges(img);
+    ed->detectLines(raw);
+    onBase(LSDAdvance::BASE_EDLINES, false)->detect(img, oriented);
+    ASSERT_EQ(raw.size(), oriented.size());
+    int reversed = 0;
+    for (size_t k = 0; k < raw.size(); k++)
+    {
+        const bool same = raw[k] == oriented[k];
+        const bool swapped = raw[k] == Vec4f(oriented[k][2], oriented[k][3], oriented[k][0], oriented[k][1]);
+        ASSERT_TRUE(same || swapped) << raw[k] << " vs " << oriented[k];
+        reversed += swapped && !same;
+    }
+    EXPECT_GT(reversed, 0) << "EdgeDrawing now orients its lines; the turn-round is redundant";
+    std::vector<Vec4f> check = oriented;
+    lsda::orientBrighterLeft(img, check);
+    EXPECT_EQ(oriented, check) << "every oriented segment already has the brighter side on its left";
+}
+
+TEST(LSDAdvance_BaseDetectors, orientBrighterLeft_turns_only_segments_with_the_bright_side_on_the_right)
+{
+    Mat img(100, 100, CV_8UC1, Scalar(20));
+    img.rowRange(50, 100).setTo(Scalar(220));  // bright below y = 50
+    // Going -x along y = 50, "left" (y - 1 direction rotated) is below: bright. Keep it.
+    std::vector<Vec4f> segments = { Vec4f(80, 50, 20, 50), Vec4f(20, 50, 80, 50), Vec4f(5, 5, 5, 5) };
+    lsda::orientBrighterLeft(img, segments);
+    EXPECT_EQ(Vec4f(80, 50, 20, 50), segments[0]);
+    EXPECT_EQ(Vec4f(80, 50, 20, 50), segments[1]);
+    EXPECT_EQ(Vec4f(5, 5, 5, 5), segments[2]);  // a point has no side
+}
+
+TEST(LSDAdvance_BaseDetectors, fld_and_edlines_bases_return_what_opencv_returns)
+{
+    // No re-implementation: with the stages off, the base segments are OpenCV's (EDLines' up to
+    // orientation, checked above).
+    const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    ASSERT_FALSE(img.empty());
+    std::vector<Vec4f> expected, lines;
+    createFastLineDetector()->detect(img, expected);
+    onBase(LSDAdvance::BASE_FLD, false)->detect(img, lines);
+    EXPECT_EQ(expected, lines);
+    Ptr<EdgeDrawing> ed = createEdgeDrawing();
+    ed->detectEdges(img);
+    ed->detectLines(expected);
+    onBase(LSDAdvance::BASE_EDLINES, false)->detect(img, lines);
+    EXPECT_EQ(expected.size(), lines.size());
+}
+
+TEST(LSDAdvance_BaseDetectors, every_fld_and_edlines_parameter_changes_the_base_segments)
+{
+    const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    ASSERT_FALSE(img.empty());
+    struct Change { const char* name; int base; std::function<void(LSDAdvance&)> apply; };
+    const std::vector<Change> changes = {
+        { "fldLengthThreshold", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldLengthThreshold(30); } },
+        { "fldDistanceThreshold", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldDistanceThreshold(3.0); } },
+        { "fldCannyThreshold1", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldCannyThreshold1(150); } },
+        { "fldCannyThreshold2", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldCannyThreshold2(150); } },
+        { "fldCannyApertureSize", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldCannyApertureSize(5); } },
+        { "fldDoMerge", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldDoMerge(true); } },
+        { "edGradientOperator", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdGradientOperator(EdgeDrawing::SOBEL); } },
+        { "edGradientThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdGradientThreshold(60); } },
+        { "edAnchorThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdAnchorThreshold(8); } },
+        { "edScanInterval", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdScanInterval(4); } },
+        { "edMinPathLength", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMinPathLength(60); } },
+        { "edSigma", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdSigma(2.5); } },
+        { "edNfaValidation", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdNfaValidation(false); } },
+        { "edMinLineLength", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMinLineLength(40); } },
+        { "edLineFitErrorThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdLineFitErrorThreshold(2.5); } },
+        { "edMaxDistanceBetweenTwoLines", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMaxDistanceBetweenTwoLines(30); } },
+        { "edMaxErrorThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMaxErrorThreshold(4.0); } },
+    };
+    for (const Change& c : changes)
+    {
+        SCOPED_TRACE(c.name);
+        std::vector<Vec4f> expected, lines;
+        onBase(c.base, false)->detect(img, expected);
+        Ptr<LSDAdvance> changed = onBase(c.base, false);
+        c.apply(*changed);
+        changed->detect(img, lines);
+        EXPECT_NE(expected, lines);
+    }
+}
+
+TEST(LSDAdvance_BaseDetectors, base_parameters_of_another_base_are_unused)
+{
+    const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    ASSERT_FALSE(img.empty());
+    std::vector<Vec4f> expected, lines;
+    onBase(LSDAdvance::BASE_LSD, true)->detect(img, expected);
+    Ptr<LSDAdvance> detector = onBase(LSDAdvance::BASE_LSD, true);
+    detector->setFldLengthThreshold(40);
+    detector->setEdGradientThreshold(80);
+    detector->detect(img, lines);
+    EXPECT_EQ(expected, lines);
+}
+
+TEST(LSDAdvance_BaseDetectors, every_base_accepts_images_too_small_for_a_segment)
+{
+    RNG rng(5);
+    for (int base : kBases)
+        for (const Size& size : { Size(1, 1), Size(2, 2), Size(5, 12), Size(12, 5), Size(1, 40), Size(6, 6) })
+        {
+            SCOPED_TRACE(cv::format("%s %dx%d", baseName(base), size.width, size.height));
+            Mat img(size, CV_8UC1);
+            rng.fill(img, RNG::UNIFORM, 0, 256);
+            std::vector<Vec4f> lines;
+            ASSERT_NO_THROW(onBase(base, true)->detect(img, lines));
+            for (const Vec4f& l : lines)
+                EXPECT_TRUE(Rect2f(-1.f, -1.f, size.width + 2.f, size.height + 2.f).contains(Point2f(l[0], l[1])));
+        }
+}
+
+TEST(LSDAdvance_BaseDetectors, switching_the_base_changes_the_segments_and_back)
+{
+    const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    ASSERT_FALSE(img.empty());
+    Ptr<LSDAdvance> detector = onBase(LSDAdvance::BASE_LSD, true);
+    std::vector<Vec4f> lsd, other, again;
+    detector->detect(img, lsd);
+    for (int base : { LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES })
+    {
+        SCOPED_TRACE(baseName(base));
+        detector->setBaseDetector(base);
+        detector->detect(img, other);
+        EXPECT_NE(lsd, other);
+        detector->setBaseDetector(LSDAdvance::BASE_LSD);
+        detector->detect(img, again);
+        EXPECT_EQ(lsd, again);
+    }
+}
+
+}} // namespace

@@ -1,0 +1,698 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The input contract of LSDAdvance (class description, "Input." and "Output."): one test per
+// kind of input. Every rejected call must throw a cv::Exception that says what was wrong and
+// what is accepted, and leave the object exactly as it was: the next frame of its sequence
+// gives the lines and alpha of an object that never saw the bad call.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
+
+Mat buildingImage()
+{
+    Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    CV_Assert(!img.empty());
+    return img;
+}
+
+// Three frames whose kept counts differ by far more than 10 %: on the third, every
+// inter-frame mode uses an alpha different from 1, so a sequence state damaged by a rejected
+// call changes the third frame's result.
+const std::vector<Mat>& sequenceFrames()
+{
+    static const std::vector<Mat> frames = [] {
+        const Mat building = buildingImage();
+        return std::vector<Mat>{ building(Rect(0, 0, 60, 60)).clone(),
+                                 building(Rect(0, 0, 200, 150)).clone(),
+                                 building(Rect(100, 80, 150, 130)).clone() };
+    }();
+    return frames;
+}
+
+struct FrameResult
+{
+    std::vector<Vec4f> lines;
+    double alpha;
+};
+
+const FrameResult& referenceThirdFrame()
+{
+    static const FrameResult result = [] {
+        Ptr<LSDAdvance> reference = createLSDAdvance();
+        FrameResult r;
+        for (const Mat& frame : sequenceFrames())
+            reference->detect(frame, r.lines);
+        r.alpha = reference->getLastStats().alpha;
+        return r;
+    }();
+    return result;
+}
+
+// Runs two frames, then the call that must be rejected (its message must contain each of
+// `mentions`), then the third frame, which must equal that of an object that never saw the call.
+void expectRejectedAndStillCorrect(const std::function<void(LSDAdvance&)>& badCall,
+                                   const std::vector<std::string>& mentions)
+{
+    const FrameResult& expected = referenceThirdFrame();
+    ASSERT_NE(1.0, expected.alpha) << "the frames must exercise the sequence state";
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    detector->detect(sequenceFrames()[0], lines);
+    detector->detect(sequenceFrames()[1], lines);
+    try
+    {
+        badCall(*detector);
+        ADD_FAILURE() << "the call was accepted";
+    }
+    catch (const cv::Exception& e)
+    {
+        for (const std::string& m : mentions)
+            EXPECT_NE(std::string::npos, e.err.find(m)) << "'" << m << "' not in: " << e.err;
+    }
+    detector->detect(sequenceFrames()[2], lines);
+    EXPECT_EQ(expected.lines, lines);
+    EXPECT_EQ(expected.alpha, detector->getLastStats().alpha);
+}
+
+void detectInto(LSDAdvance& d, const Mat& image)
+{
+    std::vector<Vec4f> lines;
+    d.detect(image, lines);
+}
+
+// Coordinates are finite and within the image extended by `margin` pixels on each side.
+void expectInsideImage(const std::vector<Vec4f>& lines, const Size& size, float margin)
+{
+    for (const Vec4f& l : lines)
+        for (int i = 0; i < 4; i++)
+        {
+            ASSERT_TRUE(std::isfinite(l[i])) << l;
+            const float extent = (float)(i % 2 == 0 ? size.width : size.height) - 1.0f;
+            EXPECT_GE(l[i], -margin) << l;
+            EXPECT_LE(l[i], extent + margin) << l;
+        }
+}
+
+// Like LSD's, endpoints may lie a few pixels outside the image ("Output." in the class
+// description; measured up to 8.5 px on the 203 frames of the test data).
+const float kOutputMargin = 10.0f;
+
+std::vector<Vec4f> detectFresh(InputArray image)
+{
+    std::vector<Vec4f> lines;
+    createLSDAdvance()->detect(image, lines);
+    return lines;
+}
+
+void expectTypeRejected(int type)
+{
+    const Mat bad(40, 50, type, Scalar::all(1));
+    expectRejectedAndStillCorrect([&](LSDAdvance& d) { detectInto(d, bad); },
+                                  { typeToString(type), "CV_8UC1", "CV_8UC3", "CV_8UC4" });
+}
+
+//--- images
+
+TEST(LSDAdvance_InputContract, empty_image_is_rejected)
+{
+    expectRejectedAndStillCorrect([](LSDAdvance& d) { detectInto(d, Mat()); }, { "empty", "CV_8UC1" });
+}
+
+TEST(LSDAdvance_InputContract, zero_rows_image_with_columns_is_rejected)
+{
+    expectRejectedAndStillCorrect([](LSDAdvance& d) { detectInto(d, Mat(0, 30, CV_8UC1)); }, { "empty" });
+}
+
+TEST(LSDAdvance_InputContract, depth_16U_is_rejected_naming_type_and_accepted_ones)
+{
+    expectTypeRejected(CV_16UC1);
+}
+
+TEST(LSDAdvance_InputContract, depth_32F_is_rejected_naming_type_and_accepted_ones)
+{
+    expectTypeRejected(CV_32FC1);
+}
+
+TEST(LSDAdvance_InputContract, depth_64F_is_rejected_naming_type_and_accepted_ones)
+{
+    expectTypeRejected(CV_64FC1);
+}
+
+TEST(LSDAdvance_InputContract, signed_depths_are_rejected)
+{
+    for (int type : { CV_8SC1, CV_16SC1, CV_32SC1, CV_16FC1 })
+    {
+        SCOPED_TRACE(typeToString(type));
+        expectTypeRejected(type);
+    }
+}
+
+TEST(LSDAdvance_InputContract, colour_images_of_other_depths_are_rejected)
+{
+    for (int type : { CV_16UC3, CV_32FC3, CV_64FC4 })
+    {
+        SCOPED_TRACE(typeToString(type));
+        expectTypeRejected(type);
+    }
+}
+
+TEST(LSDAdvance_InputContract, two_channel_image_is_rejected)
+{
+    expectTypeRejected(CV_8UC2);
+}
+
+// A colour image gives the lines of its conversion to gray.
+void expectConvertedToGray(const Mat& colour, int conversion)
+{
+    Mat gray;
+    cvtColor(colour, gray, conversion);
+    const std::vector<Vec4f> expected = detectFresh(gray);
+    ASSERT_FALSE(expected.empty());
+    EXPECT_EQ(expected, detectFresh(colour));
+}
+
+TEST(LSDAdvance_InputContract, three_channel_image_is_converted_as_BGR)
+{
+    Mat bgr(200, 240, CV_8UC3, Scalar(20, 30, 40));
+    rectangle(bgr, Rect(40, 50, 150, 100), Scalar(250, 10, 10), FILLED);
+    rectangle(bgr, Rect(60, 70, 100, 60), Scalar(10, 10, 250), FILLED);
+    expectConvertedToGray(bgr, COLOR_BGR2GRAY);
+}
+
+TEST(LSDAdvance_InputContract, four_channel_image_is_converted_as_BGRA_ignoring_alpha)
+{
+    Mat bgra(200, 240, CV_8UC4, Scalar(20, 30, 40, 0));
+    rectangle(bgra, Rect(60, 70, 100, 60), Scalar(10, 10, 250, 255), FILLED);
+    // An edge only in the alpha channel must not be seen.
+    rectangle(bgra, Rect(10, 10, 30, 180), Scalar(20, 30, 40, 255), FILLED);
+    expectConvertedToGray(bgra, COLOR_BGRA2GRAY);
+}
+
+TEST(LSDAdvance_InputContract, non_continuous_gray_view_gives_the_lines_of_its_copy)
+{
+    const Mat img = buildingImage();
+    const Mat view = img(Rect(33, 21, 301, 257));
+    ASSERT_FALSE(view.isContinuous());
+    const std::vector<Vec4f> lines = detectFresh(view);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(detectFresh(view.clone()), lines);
+    expectInsideImage(lines, view.size(), kOutputMargin);
+}
+
+TEST(LSDAdvance_InputContract, non_continuous_colour_view_gives_the_lines_of_its_copy)
+{
+    Mat bgr;
+    cvtColor(buildingImage(), bgr, COLOR_GRAY2BGR);
+    const Mat view = bgr(Rect(50, 40, 257, 199));
+    ASSERT_FALSE(view.isContinuous());
+    EXPECT_EQ(detectFresh(view.clone()), detectFresh(view));
+}
+
+TEST(LSDAdvance_InputContract, one_column_wide_view_of_a_larger_image)
+{
+    const Mat img = buildingImage();
+    const Mat column = img(Rect(100, 0, 1, img.rows));
+    ASSERT_FALSE(column.isContinuous());
+    std::vector<Vec4f> lines;
+    ASSERT_NO_THROW(createLSDAdvance()->detect(column, lines));
+    expectInsideImage(lines, column.size(), kOutputMargin);
+}
+
+TEST(LSDAdvance_InputContract, umat_input_gives_the_lines_of_the_mat)
+{
+    const Mat img = buildingImage();
+    EXPECT_EQ(detectFresh(img), detectFresh(img.getUMat(ACCESS_READ)));
+}
+
+// Tiny images: no lines can be found, no error either.
+void expectTinyImageHandled(const Size& size)
+{
+    Mat img(size, CV_8UC1);
+    RNG rng(size.area());
+    rng.fill(img, RNG::UNIFORM, 0, 256);
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    ASSERT_NO_THROW(detector->detect(img, lines));
+    expectInsideImage(lines, size, kOutputMargin);
+    EXPECT_EQ((int)lines.size(), detector->getLastStats().outputSegments);
+}
+
+TEST(LSDAdvance_InputContract, image_1x1)
+{
+    expectTinyImageHandled(Size(1, 1));
+}
+
+TEST(LSDAdvance_InputContract, image_1xN)
+{
+    expectTinyImageHandled(Size(300, 1));
+}
+
+TEST(LSDAdvance_InputContract, image_Nx1)
+{
+    expectTinyImageHandled(Size(1, 300));
+}
+
+TEST(LSDAdvance_InputContract, image_2x2)
+{
+    expectTinyImageHandled(Size(2, 2));
+}
+
+TEST(LSDAdvance_InputContract, images_smaller_than_the_base_detector_support)
+{
+    // LSD's gradient uses 2x2 pixels and its smallest region a few more: try every size up to
+    // 8x8 with a strong edge through the middle.
+    for (int h = 1; h <= 8; h++)
+        for (int w = 1; w <= 8; w++)
+        {
+            SCOPED_TRACE(Size(w, h));
+            Mat img(h, w, CV_8UC1, Scalar(0));
+            img.colRange(w / 2, w).setTo(255);
+            for (int scaled = 0; scaled < 2; scaled++)
+            {
+                Ptr<LSDAdvance> detector = createLSDAdvance();
+                detector->setLsdScale(scaled ? 0.5 : 1.0);
+                std::vector<Vec4f> lines;
+                ASSERT_NO_THROW(detector->detect(img, lines));
+                expectInsideImage(lines, img.size(), kOutputMargin);
+            }
+        }
+}
+
+TEST(LSDAdvance_InputContract, image_10000x10000_has_no_overflow)
+{
+    // 10^8 pixels: LSD's per-pixel buffers take about 41 bytes per pixel (measured peak 4.1 GB,
+    // "Memory." in the class description). A few long edges far apart must come out whole
+    // and inside the image.
+    const int n = 10000;
+    Mat img(n, n, CV_8UC1, Scalar(50));
+    rectangle(img, Rect(1000, 2000, 8000, 6000), Scalar(200), FILLED);  // edges at x = 999.5, 8999.5
+    std::vector<Vec4f> lines;
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    ASSERT_NO_THROW(detector->detect(img, lines));
+    expectInsideImage(lines, img.size(), kOutputMargin);
+    // The four sides of the rectangle, each 6000 or 8000 px long, are found as long segments.
+    int longSides = 0;
+    for (const Vec4f& l : lines)
+        longSides += lsda::segmentLength(l) > 5500;
+    EXPECT_EQ(4, longSides);
+}
+
+void expectNoLines(const Mat& img)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    detector->detect(img, lines);
+    EXPECT_TRUE(lines.empty());
+    const LSDAdvanceStats stats = detector->getLastStats();
+    EXPECT_EQ(0, stats.baseSegments);
+    EXPECT_EQ(0.0, stats.minLength);
+    EXPECT_EQ(1.0, stats.alpha);
+}
+
+TEST(LSDAdvance_InputContract, constant_image_gives_no_lines)
+{
+    expectNoLines(Mat(240, 320, CV_8UC1, Scalar(117)));
+}
+
+TEST(LSDAdvance_InputContract, black_image_gives_no_lines)
+{
+    expectNoLines(Mat(240, 320, CV_8UC1, Scalar(0)));
+}
+
+TEST(LSDAdvance_InputContract, white_image_gives_no_lines)
+{
+    expectNoLines(Mat(240, 320, CV_8UC3, Scalar::all(255)));
+}
+
+TEST(LSDAdvance_InputContract, saturated_image_gives_its_edge)
+{
+    // Clipped at 0 and 255 with a hard step: the step is found, nothing else.
+    Mat img(240, 320, CV_8UC1, Scalar(0));
+    img(Rect(0, 0, 320, 100)).setTo(255);
+    std::vector<Vec4f> lines = detectFresh(img);
+    ASSERT_EQ(1u, lines.size());
+    EXPECT_NEAR(99.5, lines[0][1], 1.0);
+    EXPECT_NEAR(99.5, lines[0][3], 1.0);
+    EXPECT_GT(lsda::segmentLength(lines[0]), 300);
+    expectInsideImage(lines, img.size(), kOutputMargin);
+}
+
+TEST(LSDAdvance_InputContract, checkerboard_gives_lines_on_the_square_edges)
+{
+    const int square = 20;
+    Mat img(240, 320, CV_8UC1);
+    for (int y = 0; y < img.rows; y++)
+        for (int x = 0; x < img.cols; x++)
+            img.at<uchar>(y, x) = ((x / square + y / square) % 2) ? 255 : 0;
+    const std::vector<Vec4f> lines = detectFresh(img);
+    ASSERT_FALSE(lines.empty());
+    expectInsideImage(lines, img.size(), kOutputMargin);
+    for (const Vec4f& l : lines)
+    {
+        // Axis-parallel, on a square boundary (pixel-centre coordinates: k * 20 - 0.5).
+        const double a = undirectedAngle(l);
+        const bool horizontal = a < 2 || a > 178;
+        ASSERT_TRUE(horizontal || std::abs(a - 90) < 2) << l;
+        const float across = horizontal ? 0.5f * (l[1] + l[3]) : 0.5f * (l[0] + l[2]);
+        const float offGrid = std::abs(across + 0.5f - square * cvRound((across + 0.5f) / square));
+        EXPECT_LT(offGrid, 1.5f) << l;
+    }
+}
+
+TEST(LSDAdvance_InputContract, pure_noise_gives_finite_lines_inside_the_image)
+{
+    Mat img(480, 640, CV_8UC1);
+    RNG rng(20260101);
+    rng.fill(img, RNG::UNIFORM, 0, 256);
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    detector->detect(img, lines);
+    expectInsideImage(lines, img.size(), kOutputMargin);
+    const LSDAdvanceStats stats = detector->getLastStats();
+    EXPECT_LE(stats.outputSegments, stats.baseSegments);
+    EXPECT_TRUE(std::isfinite(stats.minLength));
+}
+
+//--- parameters through the setters
+
+// Every real parameter with its documented range (the header's @brief of each setter).
+struct RealSetter
+{
+    const char* name;
+    void (LSDAdvance::*set)(double);
+    double lo, hi;
+    bool loIncluded;
+};
+
+std::vector<RealSetter> realSetters()
+{
+    return {
+        { "lsdScale", &LSDAdvance::setLsdScale, 0, 1, false },
+        { "lsdSigmaScale", &LSDAdvance::setLsdSigmaScale, 0, 100, false },
+        { "lsdQuant", &LSDAdvance::setLsdQuant, 0, 255, true },
+        { "lsdAngleTolerance", &LSDAdvance::setLsdAngleTolerance, 0, 180, false },
+        { "lsdLogEps", &LSDAdvance::setLsdLogEps, -1000, 1000, true },
+        { "lsdDensityThreshold", &LSDAdvance::setLsdDensityThreshold, 0, 1, true },
+        { "angleBinWidth", &LSDAdvance::setAngleBinWidth, 1, 90, true },
+        { "endpointDistance", &LSDAdvance::setEndpointDistance, 0.1, 200, true },
+        { "baselineRatio", &LSDAdvance::setBaselineRatio, 0, 1, false },
+        { "directionWeight", &LSDAdvance::setDirectionWeight, 0, 1, true },
+        { "proximityWeight", &LSDAdvance::setProximityWeight, 0, 1, true },
+        { "lengthWeight", &LSDAdvance::setLengthWeight, 0, 1, true },
+        { "proximityRatio", &LSDAdvance::setProximityRatio, 0, 10, false },
+        { "mergeThreshold", &LSDAdvance::setMergeThreshold, 0, 1, true },
+        { "maxPerpendicularOffset", &LSDAdvance::setMaxPerpendicularOffset, 0, 100, true },
+    };
+}
+
+struct IntSetter
+{
+    const char* name;
+    void (LSDAdvance::*set)(int);
+    int lo, hi;
+};
+
+std::vector<IntSetter> intSetters()
+{
+    return {
+        { "lsdRefine", &LSDAdvance::setLsdRefine, LSD_REFINE_NONE, LSD_REFINE_ADV },
+        { "lsdNumBins", &LSDAdvance::setLsdNumBins, 1, 65536 },
+        { "lengthFilterMode", &LSDAdvance::setLengthFilterMode, LSDAdvance::LENGTH_FILTER_NONE,
+          LSDAdvance::LENGTH_FILTER_COUNT_TRACKING },
+        { "lengthThreshold", &LSDAdvance::setLengthThreshold, LSDAdvance::LENGTH_THRESHOLD_PAPER,
+          LSDAdvance::LENGTH_THRESHOLD_CAPPED },
+        { "mergeStrategy", &LSDAdvance::setMergeStrategy, LSDAdvance::MERGE_NONE, LSDAdvance::MERGE_LONGEST_FIRST },
+        { "stageOrder", &LSDAdvance::setStageOrder, LSDAdvance::FILTER_THEN_MERGE, LSDAdvance::MERGE_THEN_FILTER },
+        { "angleBinning", &LSDAdvance::setAngleBinning, LSDAdvance::ANGLE_BINS_STRICT, LSDAdvance::ANGLE_BINS_NEIGHBOURS },
+    };
+}
+
+void expectRealValueRejectedByEverySetter(double value, bool skipIfInRange)
+{
+    for (const RealSetter& p : realSetters())
+    {
+        const bool inRange = (p.loIncluded ? value >= p.lo : value > p.lo) && value <= p.hi;
+        if (skipIfInRange && inRange)
+            continue;
+        SCOPED_TRACE(cv::format("%s = %g", p.name, value));
+        ASSERT_FALSE(inRange);
+        expectRejectedAndStillCorrect([&](LSDAdvance& d) { (d.*p.set)(value); }, { p.name, "finite" });
+    }
+}
+
+TEST(LSDAdvance_InputContract, NaN_is_rejected_by_every_real_setter)
+{
+    expectRealValueRejectedByEverySetter(kNaN, false);
+}
+
+TEST(LSDAdvance_InputContract, infinities_are_rejected_by_every_real_setter)
+{
+    expectRealValueRejectedByEverySetter(kInf, false);
+    expectRealValueRejectedByEverySetter(-kInf, false);
+}
+
+TEST(LSDAdvance_InputContract, huge_values_are_rejected_by_every_real_setter)
+{
+    expectRealValueRejectedByEverySetter(1e300, false);
+    expectRealValueRejectedByEverySetter(-DBL_MAX, false);
+}
+
+TEST(LSDAdvance_InputContract, negative_values_are_rejected_where_out_of_range)
+{
+    // lsdLogEps accepts negative values down to -1000.
+    expectRealValueRejectedByEverySetter(-1e-3, true);
+    expectRealValueRejectedByEverySetter(-1001, false);
+}
+
+TEST(LSDAdvance_InputContract, zero_is_rejected_where_the_range_excludes_it)
+{
+    expectRealValueRejectedByEverySetter(0.0, true);
+}
+
+TEST(LSDAdvance_InputContract, zero_is_accepted_where_the_range_includes_it)
+{
+    const Mat img = sequenceFrames()[1];
+    for (const RealSetter& p : realSetters())
+    {
+        if (!p.loIncluded || p.lo != 0)
+            continue;
+        SCOPED_TRACE(p.name);
+        Ptr<LSDAdvance> detector = createLSDAdvance();
+        ASSERT_NO_THROW((detector->*p.set)(0.0));
+        std::vector<Vec4f> lines;
+        ASSERT_NO_THROW(detector->detect(img, lines));
+        expectInsideImage(lines, img.size(), kOutputMargin);
+    }
+}
+
+TEST(LSDAdvance_InputContract, out_of_range_integers_are_rejected_by_every_int_setter)
+{
+    for (const IntSetter& p : intSetters())
+        for (int value : { INT_MIN, p.lo - 1, p.hi + 1, INT_MAX })
+        {
+            SCOPED_TRACE(cv::format("%s = %d", p.name, value));
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { (d.*p.set)(value); },
+                                          { p.name, cv::format("%d", value) });
+        }
+}
+
+TEST(LSDAdvance_InputContract, factory_rejects_bad_arguments)
+{
+    EXPECT_THROW(createLSDAdvance(-1), cv::Exception);
+    EXPECT_THROW(createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, kNaN), cv::Exception);
+    EXPECT_THROW(createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, kInf), cv::Exception);
+    EXPECT_THROW(createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, -0.5), cv::Exception);
+}
+
+//--- processSegments
+
+TEST(LSDAdvance_InputContract, segments_of_a_wrong_layout_are_rejected)
+{
+    const Mat wrongType(5, 1, CV_32FC2, Scalar::all(1));
+    const Mat twoDimensional(3, 4, CV_32FC4, Scalar::all(1));
+    const Mat doubles(5, 1, CV_64FC4, Scalar::all(1));
+    for (const Mat& bad : { wrongType, twoDimensional, doubles })
+    {
+        SCOPED_TRACE(typeToString(bad.type()));
+        expectRejectedAndStillCorrect(
+            [&](LSDAdvance& d) {
+                std::vector<Vec4f> lines;
+                d.processSegments(bad, lines);
+            },
+            { "CV_32FC4", typeToString(bad.type()) });
+    }
+}
+
+TEST(LSDAdvance_InputContract, segments_with_NaN_inf_or_huge_coordinates_are_rejected)
+{
+    const float values[] = { (float)kNaN, (float)kInf, -(float)kInf, 1.5e7f, -FLT_MAX };
+    for (float v : values)
+    {
+        SCOPED_TRACE(v);
+        std::vector<Vec4f> segments = { Vec4f(10, 10, 50, 10), Vec4f(60, 10, v, 10) };
+        expectRejectedAndStillCorrect(
+            [&](LSDAdvance& d) {
+                std::vector<Vec4f> lines;
+                d.processSegments(segments, lines);
+            },
+            { "finite" });
+    }
+}
+
+TEST(LSDAdvance_InputContract, empty_segment_set_gives_no_lines)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<Vec4f> lines(3);
+    detector->processSegments(std::vector<Vec4f>(), lines);
+    EXPECT_TRUE(lines.empty());
+    EXPECT_EQ(0, detector->getLastStats().baseSegments);
+}
+
+//--- parameters through read()
+
+void readText(LSDAdvance& d, const std::string& text)
+{
+    FileStorage fs(text, FileStorage::READ | FileStorage::MEMORY);
+    CV_Assert(fs.isOpened());
+    d.read(fs.root());
+}
+
+std::string yaml(const std::string& body)
+{
+    return "%YAML:1.0\n---\n" + body + "\n";
+}
+
+TEST(LSDAdvance_InputContract, read_rejects_non_finite_and_out_of_range_values_naming_the_parameter)
+{
+    for (const RealSetter& p : realSetters())
+        for (const char* value : { ".nan", ".inf", "-.inf", "1e300", "-1e300", "-1001" })
+        {
+            const std::string text = yaml(std::string(p.name) + ": " + value);
+            SCOPED_TRACE(text);
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { p.name });
+        }
+    for (const IntSetter& p : intSetters())
+        for (int value : { INT_MIN, p.lo - 1, p.hi + 1, INT_MAX })
+        {
+            const std::string text = yaml(cv::format("%s: %d", p.name, value));
+            SCOPED_TRACE(text);
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { p.name });
+        }
+}
+
+TEST(LSDAdvance_InputContract, read_rejects_wrong_types_naming_the_parameter)
+{
+    const char* wrongForReal[] = { "\"0.5\"", "[ 0.5, 0.6 ]", "{ value: 0.5 }", "abc" };
+    const char* wrongForInt[] = { "1.5", "\"1\"", "[ 1 ]", "{ value: 1 }", "1e3" };
+    for (const char* name : { "mergeThreshold", "lsdScale", "endpointDistance" })
+        for (const char* value : wrongForReal)
+        {
+            const std::string text = yaml(std::string(name) + ": " + value);
+            SCOPED_TRACE(text);
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { name, "number" });
+        }
+    for (const IntSetter& p : intSetters())
+        for (const char* value : wrongForInt)
+        {
+            const std::string text = yaml(std::string(p.name) + ": " + value);
+            SCOPED_TRACE(text);
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { p.name, "integer" });
+        }
+}
+
+TEST(LSDAdvance_InputContract, read_of_a_file_with_a_bad_value_changes_no_parameter)
+{
+    // Valid values before and after the bad one: none of them may be applied.
+    const std::string text = yaml("lsdScale: 0.5\nmergeThreshold: .nan\nendpointDistance: 4\nlengthFilterMode: 1");
+    expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { "mergeThreshold" });
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    EXPECT_THROW(readText(*detector, text), cv::Exception);
+    EXPECT_EQ(1.0, detector->getLsdScale());
+    EXPECT_EQ(10.0, detector->getEndpointDistance());
+    EXPECT_EQ(LSDAdvance::LENGTH_FILTER_INTERFRAME, detector->getLengthFilterMode());
+}
+
+TEST(LSDAdvance_InputContract, read_of_a_file_without_values_keeps_every_parameter)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 3.0, 0.7);
+    detector->setLsdScale(0.8);
+    for (const std::string& text : { yaml("{}"), yaml("format: 3") })
+    {
+        SCOPED_TRACE(text);
+        ASSERT_NO_THROW(readText(*detector, text));
+        EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, detector->getLengthFilterMode());
+        EXPECT_EQ(3.0, detector->getEndpointDistance());
+        EXPECT_EQ(0.7, detector->getMergeThreshold());
+        EXPECT_EQ(0.8, detector->getLsdScale());
+    }
+}
+
+TEST(LSDAdvance_InputContract, read_of_a_future_file_ignores_unknown_keys)
+{
+    // A later version may add parameters of any type; the known ones are still applied.
+    const std::string text = yaml("format: 99\nfutureDetectorKind: 7\nfutureWeights: [ 1, 2, 3 ]\n"
+                                  "futureBlock: { a: 1, b: \"x\" }\nmergeThreshold: 0.7\nlsdScale: 0.5");
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    ASSERT_NO_THROW(readText(*detector, text));
+    EXPECT_EQ(0.7, detector->getMergeThreshold());
+    EXPECT_EQ(0.5, detector->getLsdScale());
+
+    Ptr<LSDAdvance> expected = createLSDAdvance(LSDAdvance::LENGTH_FILTER_INTERFRAME, 10.0, 0.7);
+    expected->setLsdScale(0.5);
+    const Mat img = sequenceFrames()[1];
+    std::vector<Vec4f> a, b;
+    detector->detect(img, a);
+    expected->detect(img, b);
+    EXPECT_EQ(b, a);
+}
+
+TEST(LSDAdvance_InputContract, read_of_a_file_from_disk_with_an_unknown_key_and_a_wrong_type)
+{
+    const String path = cv::tempfile(".yml");
+    {
+        Ptr<LSDAdvance> saved = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 5.0, 0.65);
+        FileStorage fs(path, FileStorage::WRITE);
+        fs << saved->getDefaultName() << "{";
+        saved->write(fs);
+        fs << "futureParameter" << "anything";
+        fs << "}";
+    }
+    Ptr<LSDAdvance> loaded = createLSDAdvance();
+    {
+        FileStorage fs(path, FileStorage::READ);
+        ASSERT_TRUE(fs.isOpened());
+        ASSERT_NO_THROW(loaded->read(fs[loaded->getDefaultName()]));
+    }
+    EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, loaded->getLengthFilterMode());
+    EXPECT_EQ(5.0, loaded->getEndpointDistance());
+    EXPECT_EQ(0.65, loaded->getMergeThreshold());
+
+    // The same file with a wrong type for a known key.
+    {
+        FileStorage fs(path, FileStorage::WRITE);
+        fs << "LSDAdvance" << "{" << "endpointDistance" << "near" << "}";
+    }
+    {
+        FileStorage fs(path, FileStorage::READ);
+        ASSERT_TRUE(fs.isOpened());
+        try
+        {
+            loaded->read(fs["LSDAdvance"]);
+            ADD_FAILURE() << "a string was accepted for endpointDistance";
+        }
+        catch (const cv::Exception& e)
+        {
+            EXPECT_NE(std::string::npos, e.err.find("endpointDistance")) << e.err;
+        }
+    }
+    std::remove(path.c_str());
+    EXPECT_EQ(5.0, loaded->getEndpointDistance());
+}
+
+}} // namespace
