@@ -13,7 +13,7 @@
 #                          ${XDG_CACHE_HOME:-~/.cache}/lsd_advance/opencv-<version>, fetched there
 #                          by scripts/fetch_opencv_source.sh when missing (Debian).
 #   LSD_ADVANCE_WERROR=ON  treat warnings as errors in the module's own targets
-#   LSD_ADVANCE_SANITIZE=<list>  build every target (library, tests, ts, samples) with
+#   LSD_ADVANCE_SANITIZE=<list>  build the module's targets (library, tests, samples; not ts) with
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
 #   LSD_ADVANCE_FUZZ=ON    the libFuzzer target lsd_advance_fuzz (fuzz/; needs clang; scripts/fuzz.sh)
@@ -83,9 +83,11 @@ if(LSD_ADVANCE_WERROR)
   list(APPEND LSDA_WARNINGS -Werror)
 endif()
 
+set(LSDA_SANITIZE_OPTIONS "")
 if(LSD_ADVANCE_SANITIZE)
-  # Before any target, so that ts and the tests are instrumented like the library.
-  add_compile_options(-fsanitize=${LSD_ADVANCE_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  # The module's own code (library, tests, samples) is instrumented; OpenCV's ts, like the
+  # installed OpenCV itself, is not: it only needs to link with the sanitizer runtime.
+  set(LSDA_SANITIZE_OPTIONS -fsanitize=${LSD_ADVANCE_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=${LSD_ADVANCE_SANITIZE})
   message(STATUS "lsd_advance: sanitizers ${LSD_ADVANCE_SANITIZE}")
 endif()
@@ -109,7 +111,7 @@ target_include_directories(opencv_lsd_advance
   PRIVATE "${LSDA_ROOT}/src")
 target_link_libraries(opencv_lsd_advance PUBLIC ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
 target_compile_definitions(opencv_lsd_advance PRIVATE CVAPI_EXPORTS ${LSDA_MODULE_DEFINITIONS})
-target_compile_options(opencv_lsd_advance PRIVATE ${LSDA_WARNINGS})
+target_compile_options(opencv_lsd_advance PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
 set_target_properties(opencv_lsd_advance PROPERTIES
   CXX_VISIBILITY_PRESET hidden
   VISIBILITY_INLINES_HIDDEN ON
@@ -129,7 +131,7 @@ if(BUILD_EXAMPLES)
     get_filename_component(_name "${_src}" NAME_WE)
     add_executable(${_name} "${_src}")
     target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
-    target_compile_options(${_name} PRIVATE ${LSDA_WARNINGS})
+    target_compile_options(${_name} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
   endforeach()
 endif()
@@ -153,7 +155,7 @@ if(BUILD_TESTS)
     target_link_libraries(${_target} PRIVATE opencv_lsd_advance lsda_opencv_ts
       ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
     target_compile_definitions(${_target} PRIVATE ${LSDA_MODULE_DEFINITIONS})
-    target_compile_options(${_target} PRIVATE ${LSDA_WARNINGS})
+    target_compile_options(${_target} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
   endforeach()
 

@@ -5,9 +5,9 @@
 #
 # Usage: bash scripts/sanitizers.sh
 #
-# Builds the library, OpenCV's ts and opencv_test_lsd_advance with AddressSanitizer and
-# UndefinedBehaviorSanitizer (-DLSD_ADVANCE_SANITIZE=address,undefined, every report fatal) in
-# a build directory of its own, and runs the unit tests. Any sanitizer report (memory error,
+# Builds the library and opencv_test_lsd_advance with AddressSanitizer and
+# UndefinedBehaviorSanitizer (-DLSD_ADVANCE_SANITIZE=address,undefined, every report fatal; OpenCV
+# and its ts are linked as they are, not instrumented) in a build directory of its own, and runs the unit tests. Any sanitizer report (memory error,
 # leak, undefined behaviour) or test failure fails the script. Ends with the line
 # `sanitizers: N passed, M failed`.
 #
