@@ -25,8 +25,7 @@ T0=$SECONDS
 section() { echo; echo "==== [fuzz] $* ($((SECONDS - T0)) s)"; }
 
 section "dependencies"
-bash "$REPO/scripts/install_deps.sh"
-bash "$REPO/scripts/install_deps.sh" --fuzz
+bash "$REPO/scripts/install_deps.sh" --fuzz  # the standalone packages plus clang
 
 section "configure ($BUILD, clang)"
 cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
