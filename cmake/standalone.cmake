@@ -17,12 +17,26 @@
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
 #   LSD_ADVANCE_FUZZ=ON    the libFuzzer target lsd_advance_fuzz (fuzz/; needs clang; scripts/fuzz.sh)
+#
+# `cmake --install <build> [--prefix <p>]` (GNUInstallDirs; scripts/check_install.sh checks it):
+#   include/opencv4/opencv2/lsd_advance.hpp, include/opencv4/opencv2/lsd_advance/*.hpp  (as OpenCV's)
+#   ${CMAKE_INSTALL_LIBDIR}/libopencv_lsd_advance.so*
+#   ${CMAKE_INSTALL_LIBDIR}/cmake/opencv_lsd_advance/   find_package(opencv_lsd_advance) ->
+#                                                       opencv_lsd_advance::opencv_lsd_advance
+#   ${CMAKE_INSTALL_LIBDIR}/pkgconfig/opencv_lsd_advance.pc
+#   bin/lsd_advance_*                                   the sample programs (BUILD_EXAMPLES=ON)
+#   share/opencv4/samples/lsd_advance/                  the sample sources and samples/consumer/
+# Tests, perf tests, OpenCV's ts and the fuzzer are not installed.
+# Version: the module carries the version of the OpenCV it is built against, as opencv_contrib
+# modules do (library VERSION, package and pkg-config version); SOVERSION is its major.minor.
 
 option(BUILD_TESTS "Build accuracy and performance tests (needs an OpenCV source tree for ts)" ON)
 option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
 set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
 option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
+
+include(GNUInstallDirs)
 
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
@@ -47,6 +61,7 @@ find_package(OpenCV 4.5.4 REQUIRED
   COMPONENTS ${_lsda_required}
   OPTIONAL_COMPONENTS ${_lsda_optional})
 message(STATUS "lsd_advance: OpenCV ${OpenCV_VERSION} from ${OpenCV_DIR}")
+set(LSDA_VERSION "${OpenCV_VERSION}")
 
 set(LSDA_ROOT "${CMAKE_CURRENT_SOURCE_DIR}")
 set(LSDA_DEPS opencv_core opencv_imgproc opencv_imgcodecs opencv_ximgproc)
@@ -58,17 +73,13 @@ foreach(_m line_descriptor highgui videoio)
 endforeach()
 message(STATUS "lsd_advance: optional OpenCV modules found: ${LSDA_OPTIONAL_DEPS}")
 
-# HAVE_OPENCV_<MODULE> comes from the installed opencv2/opencv_modules.hpp (as in-tree);
-# define it ourselves only when that header does not.
+# HAVE_OPENCV_LINE_DESCRIPTOR switches the public KeyLine API on. It is a public definition of
+# the library (so every user of the library, installed or not, sees the API the library was built
+# with, whatever its opencv_modules.hpp says), defined empty: identical to the #define in OpenCV's
+# opencv_modules.hpp, so the two together are no redefinition.
 set(LSDA_MODULE_DEFINITIONS "")
-foreach(_inc ${OpenCV_INCLUDE_DIRS})
-  if(EXISTS "${_inc}/opencv2/opencv_modules.hpp")
-    file(READ "${_inc}/opencv2/opencv_modules.hpp" _lsda_modules_hpp)
-    break()
-  endif()
-endforeach()
-if(TARGET opencv_line_descriptor AND NOT _lsda_modules_hpp MATCHES "#define HAVE_OPENCV_LINE_DESCRIPTOR")
-  list(APPEND LSDA_MODULE_DEFINITIONS HAVE_OPENCV_LINE_DESCRIPTOR)
+if(TARGET opencv_line_descriptor)
+  list(APPEND LSDA_MODULE_DEFINITIONS HAVE_OPENCV_LINE_DESCRIPTOR=)
 endif()
 
 # A subset of the warnings OpenCV's own build enables (cmake/OpenCVCompilerOptions.cmake), so
@@ -106,16 +117,21 @@ if(NOT LSDA_SOURCES)
 endif()
 
 add_library(opencv_lsd_advance SHARED ${LSDA_SOURCES} ${LSDA_INTERNAL_HEADERS} ${LSDA_PUBLIC_HEADERS})
+# OpenCV's imported targets carry no include directories: OpenCV_INCLUDE_DIRS is added here for
+# the build tree and by opencv_lsd_advanceConfig.cmake for the install tree.
 target_include_directories(opencv_lsd_advance
-  PUBLIC "${LSDA_ROOT}/include" ${OpenCV_INCLUDE_DIRS}
+  PUBLIC "$<BUILD_INTERFACE:${LSDA_ROOT}/include>"
+         "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/opencv4>"
+         "$<BUILD_INTERFACE:${OpenCV_INCLUDE_DIRS}>"
   PRIVATE "${LSDA_ROOT}/src")
 target_link_libraries(opencv_lsd_advance PUBLIC ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
-target_compile_definitions(opencv_lsd_advance PRIVATE CVAPI_EXPORTS ${LSDA_MODULE_DEFINITIONS})
+target_compile_definitions(opencv_lsd_advance PRIVATE CVAPI_EXPORTS PUBLIC ${LSDA_MODULE_DEFINITIONS})
+target_compile_features(opencv_lsd_advance PUBLIC cxx_std_11)
 target_compile_options(opencv_lsd_advance PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
 set_target_properties(opencv_lsd_advance PROPERTIES
   CXX_VISIBILITY_PRESET hidden
   VISIBILITY_INLINES_HIDDEN ON
-  VERSION ${OpenCV_VERSION}
+  VERSION ${LSDA_VERSION}
   SOVERSION ${OpenCV_VERSION_MAJOR}.${OpenCV_VERSION_MINOR}
   LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/lib")
 # Undefined symbols in the shared library are errors (as in OpenCV's build on Linux).
@@ -125,6 +141,7 @@ endif()
 
 # ---------------------------------------------------------------------------------------------
 # Samples
+set(LSDA_SAMPLE_TARGETS "")
 if(BUILD_EXAMPLES)
   file(GLOB LSDA_SAMPLES CONFIGURE_DEPENDS "${LSDA_ROOT}/samples/*.cpp")
   foreach(_src ${LSDA_SAMPLES})
@@ -133,6 +150,7 @@ if(BUILD_EXAMPLES)
     target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
     target_compile_options(${_name} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
+    list(APPEND LSDA_SAMPLE_TARGETS ${_name})
   endforeach()
 endif()
 
@@ -154,7 +172,6 @@ if(BUILD_TESTS)
     target_include_directories(${_target} PRIVATE "${LSDA_ROOT}/${_kind}" "${LSDA_ROOT}/src")
     target_link_libraries(${_target} PRIVATE opencv_lsd_advance lsda_opencv_ts
       ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
-    target_compile_definitions(${_target} PRIVATE ${LSDA_MODULE_DEFINITIONS})
     target_compile_options(${_target} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
   endforeach()
@@ -179,5 +196,80 @@ endif()
 if(LSD_ADVANCE_FUZZ)
   add_subdirectory("${LSDA_ROOT}/fuzz" "${CMAKE_BINARY_DIR}/fuzz")
 endif()
+
+include("${CMAKE_CURRENT_LIST_DIR}/python.cmake")   # Python module (LSD_ADVANCE_PYTHON; python/)
+
+# ---------------------------------------------------------------------------------------------
+# Install: headers, library, CMake package, pkg-config file, sample programs and sources.
+include(CMakePackageConfigHelpers)
+set(LSDA_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/opencv_lsd_advance")
+set(LSDA_INSTALL_SAMPLESDIR "${CMAKE_INSTALL_DATADIR}/opencv4/samples/lsd_advance")
+
+install(DIRECTORY "${LSDA_ROOT}/include/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/opencv4"
+  FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
+install(TARGETS opencv_lsd_advance EXPORT opencv_lsd_advanceTargets
+  LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+# An OpenCV outside the linker's default directories stays found after installation.
+set_target_properties(opencv_lsd_advance ${LSDA_SAMPLE_TARGETS} PROPERTIES INSTALL_RPATH_USE_LINK_PATH ON)
+
+# The package: opencv_lsd_advance::opencv_lsd_advance, which brings the OpenCV modules the library
+# links (find_dependency with the same components) and HAVE_OPENCV_LINE_DESCRIPTOR when built so.
+install(EXPORT opencv_lsd_advanceTargets NAMESPACE opencv_lsd_advance::
+  DESTINATION "${LSDA_INSTALL_CMAKEDIR}")
+set(LSDA_OPENCV_COMPONENTS "")
+foreach(_dep ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
+  string(REGEX REPLACE "^opencv_" "" _component "${_dep}")
+  list(APPEND LSDA_OPENCV_COMPONENTS ${_component})
+endforeach()
+list(JOIN LSDA_OPENCV_COMPONENTS " " LSDA_OPENCV_COMPONENTS)
+configure_package_config_file("${LSDA_ROOT}/cmake/opencv_lsd_advanceConfig.cmake.in"
+  "${CMAKE_BINARY_DIR}/install/opencv_lsd_advanceConfig.cmake"
+  INSTALL_DESTINATION "${LSDA_INSTALL_CMAKEDIR}")
+# Same major version as requested and at least the requested one: OpenCV's own rule.
+write_basic_package_version_file("${CMAKE_BINARY_DIR}/install/opencv_lsd_advanceConfigVersion.cmake"
+  VERSION ${LSDA_VERSION} COMPATIBILITY SameMajorVersion)
+install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advanceConfig.cmake"
+              "${CMAKE_BINARY_DIR}/install/opencv_lsd_advanceConfigVersion.cmake"
+  DESTINATION "${LSDA_INSTALL_CMAKEDIR}")
+
+# pkg-config: written at install time, so that its prefix is the one given to
+# `cmake --install --prefix` (CMAKE_INSTALL_PREFIX of the install script), not the configured one.
+set(LSDA_PC_CFLAGS "")
+foreach(_def ${LSDA_MODULE_DEFINITIONS})
+  string(APPEND LSDA_PC_CFLAGS " -D${_def}")
+endforeach()
+install(CODE "
+  set(LSDA_PC_TEMPLATE \"${LSDA_ROOT}/cmake/opencv_lsd_advance.pc.in\")
+  set(LSDA_PC_FILE \"${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc\")
+  set(LSDA_PC_CFLAGS \"${LSDA_PC_CFLAGS}\")
+  set(LSDA_VERSION \"${LSDA_VERSION}\")
+  set(LSDA_INSTALL_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
+  set(LSDA_INSTALL_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")")
+install(CODE [[
+  set(LSDA_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+  foreach(_dir LIBDIR INCLUDEDIR)
+    if(IS_ABSOLUTE "${LSDA_INSTALL_${_dir}}")
+      set(LSDA_PC_${_dir} "${LSDA_INSTALL_${_dir}}")
+    else()
+      set(LSDA_PC_${_dir} "\${prefix}/${LSDA_INSTALL_${_dir}}")
+    endif()
+  endforeach()
+  configure_file("${LSDA_PC_TEMPLATE}" "${LSDA_PC_FILE}" @ONLY)
+]])
+install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc"
+  DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+
+# Samples: the programs, with an RPATH to the installed library, and their sources (as OpenCV
+# installs a module's samples) together with the consumer project samples/consumer/.
+if(LSDA_SAMPLE_TARGETS)
+  file(RELATIVE_PATH _lsda_bin_to_lib "${CMAKE_INSTALL_FULL_BINDIR}" "${CMAKE_INSTALL_FULL_LIBDIR}")
+  set_target_properties(${LSDA_SAMPLE_TARGETS} PROPERTIES INSTALL_RPATH "$ORIGIN/${_lsda_bin_to_lib}")
+  install(TARGETS ${LSDA_SAMPLE_TARGETS} RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+endif()
+file(GLOB LSDA_SAMPLE_SOURCES CONFIGURE_DEPENDS "${LSDA_ROOT}/samples/*.cpp" "${LSDA_ROOT}/samples/*.hpp")
+install(FILES ${LSDA_SAMPLE_SOURCES} DESTINATION "${LSDA_INSTALL_SAMPLESDIR}")
+install(DIRECTORY "${LSDA_ROOT}/samples/consumer" DESTINATION "${LSDA_INSTALL_SAMPLESDIR}")
 
 message(STATUS "lsd_advance: BUILD_TESTS=${BUILD_TESTS} BUILD_EXAMPLES=${BUILD_EXAMPLES}")

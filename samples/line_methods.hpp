@@ -25,6 +25,8 @@ struct LineMethod
     std::function<void(const cv::Mat&, std::vector<cv::Vec4f>&)> detect;
     //! Starts a new sequence (no-op for detectors without sequence state).
     std::function<void()> reset;
+    //! The LSDAdvance detector behind the method, for its stage outputs; empty for other detectors.
+    cv::Ptr<cv::ximgproc::LSDAdvance> lsdAdvance;
 };
 
 //! Median of the values (the upper one of the two middle values for an even count); 0 for none.
@@ -66,7 +68,7 @@ inline const char* lineMethodNames()
 inline LineMethod lineMethodOf(const std::string& name,
                                const std::function<void(const cv::Mat&, std::vector<cv::Vec4f>&)>& detect)
 {
-    return LineMethod{ name, detect, [] {} };
+    return LineMethod{ name, detect, [] {}, cv::Ptr<cv::ximgproc::LSDAdvance>() };
 }
 
 //! An LSDAdvance detector as a method; its sequence state is reset by reset().
@@ -74,7 +76,7 @@ inline LineMethod lineMethodOf(const std::string& name, const cv::Ptr<cv::ximgpr
 {
     return LineMethod{ name,
                        [detector](const cv::Mat& gray, std::vector<cv::Vec4f>& lines) { detector->detect(gray, lines); },
-                       [detector] { detector->reset(); } };
+                       [detector] { detector->reset(); }, detector };
 }
 
 //! PL-VINS's LSD set-up: half scale, looser density, lines >= 1/8 of the smaller image side.

@@ -10,7 +10,8 @@
 //    consecutive frames checked against the epipolar geometry of the poses (doc/matching.md);
 //  --dataset=homography: LBD matching between image pairs related by a known homography:
 //    matches, correct matches, precision, repeatability and localisation error (doc/matching.md).
-// Prints Markdown tables on stdout, optionally writes CSV, and reports progress on stderr.
+// Prints Markdown tables on stdout, optionally writes CSV and SVG bar charts of time, F and
+// long-segment share per method (--chart), and reports progress on stderr.
 
 #include "line_methods.hpp"
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
@@ -22,6 +23,7 @@
 #include <opencv2/lsd_advance/evaluation.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -88,6 +90,170 @@ struct Table
         }
     }
 };
+
+// Text as SVG character data.
+std::string xmlEscaped(const std::string& text)
+{
+    std::string out;
+    for (char c : text)
+    {
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else
+            out += c;
+    }
+    return out;
+}
+
+// Spacing of about five axis ticks up to maxValue: 1, 2 or 5 times a power of ten.
+double tickStep(double maxValue)
+{
+    const double raw = maxValue / 5.0;
+    const double power = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : { 1.0, 2.0, 5.0 })
+        if (m * power >= raw)
+            return m * power;
+    return 10.0 * power;
+}
+
+// A horizontal bar chart, one bar per method with its value written at its end, as a
+// self-contained SVG file (vector: crisp at any size in the docs).
+struct BarChart
+{
+    std::string title, note;
+    std::vector<std::string> labels, valueTexts;
+    std::vector<double> values;
+
+    void writeSvg(const std::string& path) const
+    {
+        // One value far above the others (FLD+merge's time) would squeeze the other bars: the axis
+        // then ends at three times the median, and longer bars are drawn cut, with their value.
+        const double largest = values.empty() ? 1.0 : std::max(1e-9, *std::max_element(values.begin(), values.end()));
+        const double typical = median(values), shown = largest > 5 * typical && typical > 0 ? 3 * typical : largest;
+        const double step = tickStep(shown), axisMax = std::ceil(shown / step) * step;
+        size_t longestLabel = 0, longestValue = 0;
+        for (size_t i = 0; i < labels.size(); i++)
+        {
+            longestLabel = std::max(longestLabel, labels[i].size());
+            longestValue = std::max(longestValue, valueTexts[i].size());
+        }
+        // Character widths of 12-15 px sans-serif fonts, on the safe side.
+        const int labelWidth = (int)(8.2 * longestLabel) + 20, valueWidth = (int)(7.5 * longestValue) + 12;
+        const int plotWidth = 440, barHeight = 22, gap = 8, top = note.empty() ? 44 : 62;
+        const int width = std::max(labelWidth + plotWidth + 24 + valueWidth + 10,
+                                   (int)(9.0 * std::max(title.size(), note.size() * 4 / 5)) + 20);
+        const int plotHeight = (int)values.size() * (barHeight + gap);
+        const int height = top + plotHeight + 30;
+
+        std::ofstream out(path.c_str());
+        if (!out)
+            CV_Error_(Error::StsError, ("cannot write the chart %s", path.c_str()));
+        out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+            << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n";
+        out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+        out << "<text x=\"10\" y=\"24\" font-size=\"15\" font-weight=\"bold\">" << xmlEscaped(title) << "</text>\n";
+        if (!note.empty())
+            out << "<text x=\"10\" y=\"44\" font-size=\"12\" fill=\"#555\">" << xmlEscaped(note) << "</text>\n";
+        for (double tick = 0; tick <= axisMax + step / 2; tick += step)
+        {
+            const double x = labelWidth + plotWidth * tick / axisMax;
+            out << format("<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#ddd\"/>\n", x, top - 4, x,
+                          top + plotHeight);
+            out << format("<text x=\"%.1f\" y=\"%d\" font-size=\"11\" fill=\"#555\" text-anchor=\"middle\">%g</text>\n",
+                          x, top + plotHeight + 16, tick);
+        }
+        for (size_t i = 0; i < values.size(); i++)
+        {
+            const int y = top + (int)i * (barHeight + gap);
+            const bool cut = values[i] > axisMax;
+            const double barWidth = cut ? plotWidth + 24.0 : plotWidth * std::max(0.0, values[i]) / axisMax;
+            // LSDAdvance's variants in one colour, the other detectors in another.
+            const char* colour = labels[i].compare(0, 10, "LSDAdvance") == 0 ? "#d95f02" : "#7570b3";
+            out << format("<text x=\"%d\" y=\"%d\" font-size=\"13\" text-anchor=\"end\">", labelWidth - 8,
+                          y + barHeight - 6)
+                << xmlEscaped(labels[i]) << "</text>\n";
+            out << format("<rect x=\"%d\" y=\"%d\" width=\"%.1f\" height=\"%d\" fill=\"%s\"/>\n", labelWidth, y,
+                          barWidth, barHeight, colour);
+            if (cut)  // a white gap across the bar just beyond the axis end
+                out << format("<path d=\"M%.1f %d l6 %d M%.1f %d l6 %d\" stroke=\"white\" stroke-width=\"2.5\"/>\n",
+                              labelWidth + plotWidth + 4.0, y - 2, barHeight + 4, labelWidth + plotWidth + 10.0, y - 2,
+                              barHeight + 4);
+            out << format("<text x=\"%.1f\" y=\"%d\" font-size=\"12\">", labelWidth + barWidth + 5, y + barHeight - 6)
+                << xmlEscaped(valueTexts[i]) << "</text>\n";
+        }
+        out << format("<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#333\"/>\n", labelWidth, top - 4,
+                      labelWidth, top + plotHeight);
+        out << "</svg>\n";
+    }
+};
+
+// The column of the table whose header starts with `prefix`; -1 when there is none.
+int columnOf(const Table& table, const std::string& prefix)
+{
+    for (size_t c = 0; c < table.header.size(); c++)
+        if (table.header[c].compare(0, prefix.size(), prefix) == 0)
+            return (int)c;
+    return -1;
+}
+
+// One bar per row of the table's column, labelled with the table's own text of the value.
+BarChart chartOf(const Table& table, int column, const std::string& title, const std::string& note)
+{
+    BarChart chart;
+    chart.title = title;
+    chart.note = note;
+    for (const auto& row : table.rows)
+    {
+        chart.labels.push_back(row[0]);
+        chart.values.push_back(std::stod(row[column]));
+        chart.valueTexts.push_back(row[column]);
+    }
+    return chart;
+}
+
+// <prefix>_time.svg, <prefix>_f.svg and <prefix>_long.svg from the columns the table has;
+// returns the files written.
+std::vector<std::string> writeCharts(const Table& table, const std::string& prefix, const std::string& runInfo,
+                                     double longLength)
+{
+    std::vector<std::string> written;
+    const int time = std::max(columnOf(table, "ms / image (median)"), columnOf(table, "ms / frame (median)"));
+    if (time >= 0)
+    {
+        const bool perFrame = table.header[time].find("frame") != std::string::npos;
+        BarChart chart = chartOf(table, time, perFrame ? "Time per frame, ms (median)" : "Time per image, ms (median)", runInfo);
+        // Times compare within one run only: each bar also gives its ratio to LSD's.
+        for (size_t i = 0; i < table.rows.size(); i++)
+            if (table.rows[i][0] == "LSD" && chart.values[i] > 0)
+            {
+                for (size_t k = 0; k < chart.values.size(); k++)
+                    chart.valueTexts[k] += format(" ms (%.2fx LSD)", chart.values[k] / chart.values[i]);
+                chart.note += ", ratio to LSD in this run";
+            }
+        written.push_back(prefix + "_time.svg");
+        chart.writeSvg(written.back());
+    }
+    const int f = columnOf(table, "F");
+    if (f >= 0 && table.header[f] == "F")
+    {
+        written.push_back(prefix + "_f.svg");
+        chartOf(table, f, "F score (structural, 2 AP AR / (AP + AR))", runInfo).writeSvg(written.back());
+    }
+    const int longShare = columnOf(table, "long share");
+    if (longShare >= 0)
+    {
+        written.push_back(prefix + "_long.svg");
+        chartOf(table, longShare,
+                format("Share of segments >= %g px%s", longLength,
+                       table.header[longShare] == "long share" ? "" : " (mean over frames)"),
+                runInfo).writeSvg(written.back());
+    }
+    return written;
+}
 
 Table benchmarkYorkUrban(const std::vector<LineMethod>& methods, const std::vector<LabelledImage>& images,
                          int repeats, double longLength)
@@ -327,7 +493,9 @@ int main(int argc, char** argv)
         "{repeats  | 1          | detections per image for the time (median) }"
         "{threads  | 1          | cv::setNumThreads for the whole run (times in the tables are one core by default) }"
         "{long     | 60         | length in pixels from which a segment is long }"
-        "{csv      |            | also write the table to this CSV file }";
+        "{csv      |            | also write the table to this CSV file }"
+        "{chart    |            | also write the table as SVG bar charts <chart>_time.svg, <chart>_f.svg and "
+                                  "<chart>_long.svg (those of the dataset's columns) }";
     CommandLineParser parser(argc, argv, keys);
     parser.about("LSDAdvance benchmark: " + std::string(lineMethodNames()));
     if (parser.has("help") || (!parser.has("data") && !parser.has("image1")))
@@ -342,6 +510,7 @@ int main(int argc, char** argv)
     const int repeats = std::max(1, parser.get<int>("repeats"));
     const double longLength = parser.get<double>("long");
     const String csv = parser.get<String>("csv");
+    const String chartPrefix = parser.get<String>("chart");
     LineMatchOptions matching;
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     matching.enabled = !parser.has("no-match");
@@ -366,6 +535,7 @@ int main(int argc, char** argv)
         methods.push_back(makeLineMethod(name, params.isOpened() && name == "lsdadvance" ? params.root() : FileNode()));
 
     Table table;
+    std::string runInfo;  // the charts' subtitle
     if (dataset == "yorkurban")
     {
         std::vector<LabelledImage> all = loadYorkUrban(data), images;
@@ -375,6 +545,7 @@ int main(int argc, char** argv)
         std::cout << "YorkUrban: " << images.size() << " images (" << subset << ") from " << data
                   << ", structural protocol (1 px, 5 deg, 75% coverage, +0.5 px), " << getNumThreads()
                   << " thread(s), median of " << repeats << " run(s) per image\n\n";
+        runInfo = format("YorkUrban, %zu images (%s), %d thread(s)", images.size(), subset.c_str(), getNumThreads());
         table = benchmarkYorkUrban(methods, images, repeats, longLength);
     }
     else if (dataset == "sequence")
@@ -382,6 +553,7 @@ int main(int argc, char** argv)
         const SequenceData sequence = loadSequence(data);
         std::cout << "Sequence: " << sequence.imagePaths.size() << " frames from " << data << ", "
                   << getNumThreads() << " thread(s), long = " << longLength << " px\n\n";
+        runInfo = format("%zu frames of %s, %d thread(s)", sequence.imagePaths.size(), data.c_str(), getNumThreads());
         table = benchmarkSequence(methods, sequence, longLength, matching);
     }
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
@@ -401,6 +573,7 @@ int main(int argc, char** argv)
         std::cout << "Homography pairs: " << pairs.size() << " from " << (data.empty() ? pairs[0].image1Path : data)
                   << ", LBD, mutual nearest neighbours with Hamming distance <= " << matching.params.maxHamming
                   << ", correct within 3 px (doc/matching.md), " << getNumThreads() << " thread(s)\n\n";
+        runInfo = format("%zu homography pair(s), %d thread(s)", pairs.size(), getNumThreads());
         table = benchmarkHomography(methods, pairs, matching, repeats);
     }
 #endif
@@ -413,5 +586,8 @@ int main(int argc, char** argv)
     table.print(std::cout);
     if (!csv.empty())
         table.writeCsv(csv);
+    if (!chartPrefix.empty())
+        for (const std::string& file : writeCharts(table, chartPrefix, runInfo, longLength))
+            std::cerr << "wrote " << file << "\n";
     return 0;
 }

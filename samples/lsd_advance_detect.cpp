@@ -5,7 +5,8 @@
 // Detects line segments in an image, each image of a folder or each frame of a video with one
 // of the methods of line_methods.hpp, optionally writes them (<stem>.txt, x1 y1 x2 y2 per row)
 // and drawn on the image (<stem>.png), and prints segments per image, the share of long
-// segments and the time of the detection.
+// segments and the time of the detection. For LSDAdvance it also draws what each stage did
+// (--draw=filter,groups,merge), like the figures of the paper, from getLastStageOutputs().
 
 #include "frame_source.hpp"
 #include "line_methods.hpp"
@@ -21,11 +22,305 @@
 #include <cctype>
 #include <cstdio>
 #include <iostream>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 
 using namespace cv;
 
 namespace {
+
+//--- drawings of the stages
+
+const Scalar kGrey(150, 150, 150), kKept(80, 220, 80), kDropped(60, 60, 235), kFused(230, 200, 40),
+    kPieceA(40, 170, 255), kPieceB(200, 80, 255);
+
+// A key of a drawing's caption: a short stroke of the colour, then the text.
+struct LegendItem
+{
+    Scalar colour;
+    std::string text;
+};
+
+// What --draw asks for.
+struct Drawings
+{
+    bool lines = false, filter = false, groups = false, merge = false;
+
+    bool any() const { return lines || filter || groups || merge; }
+    bool ofStages() const { return filter || groups || merge; }
+};
+
+// --draw alone means --draw=lines (the behaviour before the stage drawings).
+Drawings parseDrawings(const std::string& list)
+{
+    Drawings d;
+    std::stringstream ss(list);
+    std::string kind;
+    while (std::getline(ss, kind, ','))
+    {
+        if (kind == "lines" || kind == "true")
+            d.lines = true;
+        else if (kind == "filter")
+            d.filter = true;
+        else if (kind == "groups")
+            d.groups = true;
+        else if (kind == "merge")
+            d.merge = true;
+        else if (kind == "stages")
+            d.filter = d.groups = d.merge = true;
+        else if (!kind.empty())
+            throw std::runtime_error("unknown drawing '" + kind + "'; known: lines, filter, groups, merge, stages");
+    }
+    return d;
+}
+
+// The image, or a region of it enlarged to about 900 px wide (--zoom), darkened so that
+// coloured segments stand out on any content; segments are given in image coordinates.
+class StageCanvas
+{
+public:
+    StageCanvas(const Mat& gray, const Rect& region)
+        : region_(region), scale_(std::max(1, cvRound(900.0 / region.width)))
+    {
+        Mat dim;
+        gray(region).convertTo(dim, -1, 0.4, 10);
+        resize(dim, dim, Size(), scale_, scale_, INTER_LINEAR);
+        cvtColor(dim, image, COLOR_GRAY2BGR);
+        stroke = std::max(1, cvRound(std::min(image.cols, image.rows) / 900.0));
+        whole_ = region.size() == gray.size();
+    }
+    //! A copy is a separate drawing on the same background (Mat alone would share the pixels).
+    StageCanvas(const StageCanvas& other)
+        : image(other.image.clone()), stroke(other.stroke), region_(other.region_), scale_(other.scale_),
+          whole_(other.whole_)
+    {}
+    StageCanvas& operator=(const StageCanvas&) = delete;
+
+    Mat image;       //!< BGR
+    int stroke = 1;  //!< width of a thin line, px
+
+    void segment(const Vec4f& s, const Scalar& colour, int thickness) { segmentOn(image, s, colour, thickness); }
+    //! The same on another image of the canvas' size (a layer blended later).
+    void segmentOn(Mat& target, const Vec4f& s, const Scalar& colour, int thickness) const
+    {
+        line(target, at(s[0], s[1]), at(s[2], s[3]), colour, thickness, LINE_AA);
+    }
+    void endpoints(const Vec4f& s, const Scalar& colour)
+    {
+        circle(image, at(s[0], s[1]), stroke + 1, colour, FILLED, LINE_AA);
+        circle(image, at(s[2], s[3]), stroke + 1, colour, FILLED, LINE_AA);
+    }
+    //! For the title: which part of the image is shown.
+    std::string shownPart() const
+    {
+        return whole_ ? std::string() : format(" [region %d,%d %dx%d, %dx]", region_.x, region_.y, region_.width,
+                                               region_.height, scale_);
+    }
+
+private:
+    // Pixel i of the image covers [i - 0.5, i + 0.5), as pixel centres are integers.
+    Point2f at(float x, float y) const
+    {
+        return Point2f((float)((x - region_.x + 0.5) * scale_ - 0.5), (float)((y - region_.y + 0.5) * scale_ - 0.5));
+    }
+
+    Rect region_;
+    int scale_;
+    bool whole_ = true;
+};
+
+// --zoom=x,y,w,h within the image; the whole image when empty.
+Rect zoomRegion(const std::string& zoom, const Size& imageSize)
+{
+    const Rect whole(Point(), imageSize);
+    if (zoom.empty())
+        return whole;
+    Rect r;
+    char tail = 0;
+    if (std::sscanf(zoom.c_str(), "%d,%d,%d,%d%c", &r.x, &r.y, &r.width, &r.height, &tail) != 4)
+        throw std::runtime_error("--zoom must be x,y,width,height in pixels, got " + zoom);
+    if ((r & whole).area() == 0)
+        throw std::runtime_error(format("--zoom=%s does not overlap the %dx%d image", zoom.c_str(), imageSize.width,
+                                        imageSize.height));
+    return r & whole;
+}
+
+// The drawing with a black band above it: a title, then the legend, wrapped to the width.
+Mat withCaption(const Mat& picture, const std::string& title, const std::vector<LegendItem>& legend)
+{
+    const int font = FONT_HERSHEY_SIMPLEX;
+    const double scale = std::min(1.2, std::max(0.42, picture.cols / 1500.0));
+    const int weight = scale > 0.8 ? 2 : 1;
+    int baseline = 0;
+    const int textHeight = getTextSize("Ag", font, scale, weight, &baseline).height;
+    const int rowHeight = textHeight + baseline + 8, margin = 8, keyLength = 3 * textHeight;
+
+    // Lay out first: rows of (x, item), the title alone on the first row.
+    std::vector<std::vector<std::pair<int, const LegendItem*> > > rows(1);
+    int x = margin;
+    for (const LegendItem& item : legend)
+    {
+        const int width = keyLength + 6 + getTextSize(item.text, font, scale, weight, &baseline).width;
+        if (rows.size() == 1 || (x + width > picture.cols - margin && !rows.back().empty()))
+        {
+            rows.push_back({});
+            x = margin;
+        }
+        rows.back().push_back(std::make_pair(x, &item));
+        x += width + 3 * margin;
+    }
+    Mat out(picture.rows + (int)rows.size() * rowHeight + margin, picture.cols, CV_8UC3, Scalar::all(0));
+    picture.copyTo(out(Rect(0, out.rows - picture.rows, picture.cols, picture.rows)));
+    const Scalar white(255, 255, 255);
+    putText(out, title, Point(margin, margin + textHeight), font, scale, white, weight, LINE_AA);
+    for (size_t r = 1; r < rows.size(); r++)
+    {
+        const int y = margin + (int)r * rowHeight + textHeight;
+        for (const auto& placed : rows[r])
+        {
+            line(out, Point(placed.first, y - textHeight / 2), Point(placed.first + keyLength, y - textHeight / 2),
+                 placed.second->colour, std::max(2, weight + 1), LINE_AA);
+            putText(out, placed.second->text, Point(placed.first + keyLength + 6, y), font, scale, white, weight, LINE_AA);
+        }
+    }
+    return out;
+}
+
+// The segments' exact coordinates, to tell a segment a stage passed on unchanged from a new one.
+std::set<std::vector<float> > keysOf(const std::vector<Vec4f>& segments)
+{
+    std::set<std::vector<float> > keys;
+    for (const Vec4f& s : segments)
+        keys.insert(std::vector<float>(s.val, s.val + 4));
+    return keys;
+}
+
+bool contains(const std::set<std::vector<float> >& keys, const Vec4f& s)
+{
+    return keys.count(std::vector<float>(s.val, s.val + 4)) > 0;
+}
+
+// Distinct colour number k: hues spaced by the golden angle, bright and saturated.
+Scalar groupColour(int k)
+{
+    const double hue = std::fmod(k * 0.618033988749895, 1.0) * 180.0;
+    Mat hsv(1, 1, CV_8UC3, Scalar(hue, k % 3 == 1 ? 170 : 255, 255)), bgr;
+    cvtColor(hsv, bgr, COLOR_HSV2BGR);
+    const Vec3b c = bgr.at<Vec3b>(0, 0);
+    return Scalar(c[0], c[1], c[2]);
+}
+
+// The outputs of the stages of the last detect() and how they were run.
+struct Stages
+{
+    std::vector<Vec4f> base, filtered, merged;
+    std::vector<int> labels;
+    ximgproc::LSDAdvanceStats stats;
+    bool filterFirst = false, filterOn = false, mergeOn = false;
+
+    explicit Stages(const ximgproc::LSDAdvance& detector)
+    {
+        detector.getLastStageOutputs(base, filtered, labels, merged);
+        stats = detector.getLastStats();
+        filterFirst = detector.getStageOrder() == ximgproc::LSDAdvance::FILTER_THEN_MERGE;
+        filterOn = detector.getLengthFilterMode() != ximgproc::LSDAdvance::LENGTH_FILTER_NONE;
+        mergeOn = detector.getMergeStrategy() != ximgproc::LSDAdvance::MERGE_NONE;
+    }
+    const std::vector<Vec4f>& filterInput() const { return filterFirst ? base : merged; }
+    const std::vector<Vec4f>& groupingInput() const { return filterFirst ? filtered : base; }
+};
+
+// (a) Stage 1: the segments it kept and those it dropped.
+Mat drawFilter(StageCanvas canvas, const Stages& st)
+{
+    const int w = canvas.stroke;
+    const std::vector<Vec4f>& input = st.filterInput();
+    // The filter keeps segments in their order, so kept ones are a subsequence of the input.
+    size_t k = 0;
+    for (const Vec4f& s : input)
+        if (k < st.filtered.size() && s == st.filtered[k])
+            k++;
+        else
+            canvas.segment(s, kDropped, w);
+    for (const Vec4f& s : st.filtered)
+        canvas.segment(s, kKept, w + 1);
+    const int dropped = (int)(input.size() - st.filtered.size());
+    const std::string title = format("Stage 1, length filter on the %s segments: min length %.1f px (alpha %.2f)%s%s",
+                                     st.filterFirst ? "base" : "merged", st.stats.minLength, st.stats.alpha,
+                                     st.filterOn ? "" : " - filter off", canvas.shownPart().c_str());
+    return withCaption(canvas.image, title, { { kKept, format("kept: %zu", st.filtered.size()) },
+                                        { kDropped, format("dropped (shorter): %d", dropped) } });
+}
+
+// (b) Stage 2: each group of two or more segments in its own colour, segments alone in grey.
+Mat drawGroups(StageCanvas canvas, const Stages& st)
+{
+    const int w = canvas.stroke;
+    const std::vector<Vec4f>& input = st.groupingInput();
+    int alone = 0, grouped = 0;
+    for (size_t i = 0; i < input.size(); i++)
+        if (st.labels.empty() || st.labels[i] < 0)
+        {
+            canvas.segment(input[i], kGrey, w);
+            alone++;
+        }
+    for (size_t i = 0; i < st.labels.size(); i++)
+        if (st.labels[i] >= 0)
+        {
+            canvas.segment(input[i], groupColour(st.labels[i]), w + 1);
+            grouped++;
+        }
+    const std::string title = format("Stage 2, grouping of the %s segments by angle and endpoints%s%s",
+                                     st.filterFirst ? "filtered" : "base", st.mergeOn ? "" : " - merging off",
+                                     canvas.shownPart().c_str());
+    return withCaption(canvas.image, title, { { groupColour(0), format("%d groups of 2+ segments (one colour each): %d segments",
+                                                                 st.stats.mergeGroups, grouped) },
+                                        { kGrey, format("alone: %d", alone) } });
+}
+
+// (c) Stage 3: every fused segment as a wide band with the pieces it was made of drawn thin on
+// top in alternating colours; segments that merging left as they were in grey.
+Mat drawMerge(StageCanvas canvas, const Stages& st)
+{
+    const int w = canvas.stroke;
+    const std::vector<Vec4f>& input = st.groupingInput();
+    const std::set<std::vector<float> > inputKeys = keysOf(input), outputKeys = keysOf(st.merged);
+    int fused = 0, pieces = 0, unchanged = 0;
+    for (const Vec4f& s : st.merged)
+        if (contains(inputKeys, s))
+        {
+            canvas.segment(s, kGrey, w);
+            unchanged++;
+        }
+    Mat bands = canvas.image.clone();
+    for (const Vec4f& s : st.merged)
+        if (!contains(inputKeys, s))
+        {
+            canvas.segmentOn(bands, s, kFused, 4 * w + 3);
+            fused++;
+        }
+    addWeighted(bands, 0.6, canvas.image, 0.4, 0, canvas.image);
+    for (const Vec4f& s : input)
+        if (!contains(outputKeys, s))
+        {
+            const Scalar& c = pieces % 2 ? kPieceB : kPieceA;
+            canvas.segment(s, c, w);
+            canvas.endpoints(s, c);
+            pieces++;
+        }
+    const std::string title = format("Stage 3, merging: %zu segments in, %zu out%s%s", input.size(), st.merged.size(),
+                                     st.mergeOn ? "" : " - merging off", canvas.shownPart().c_str());
+    return withCaption(canvas.image, title, { { kFused, format("fused segments: %d", fused) },
+                                        { kPieceA, format("pieces they were fused from (orange and pink in turn): %d", pieces) },
+                                        { kGrey, format("unchanged: %d", unchanged) } });
+}
+
+void writeImage(const std::string& path, const Mat& image)
+{
+    if (!imwrite(path, image))
+        throw std::runtime_error("cannot write " + path);
+}
 
 struct Summary
 {
@@ -57,21 +352,28 @@ int run(const CommandLineParser& parser)
     const String input = parser.get<String>("input");
     const String output = parser.get<String>("output");
     const String paramsPath = parser.get<String>("params");
-    const bool sequence = parser.has("sequence"), draw = parser.has("draw");
+    const bool sequence = parser.has("sequence"), writeTxt = !parser.has("no-segments");
+    const Drawings draw = parseDrawings(parser.has("draw") ? parser.get<std::string>("draw") : std::string());
+    const std::string extension = parser.get<std::string>("ext");
+    const std::string zoom = parser.get<std::string>("zoom");
     const double longLength = parser.get<double>("long");
     if (!parser.check())
     {
         parser.printErrors();
         return 1;
     }
-    if (draw && output.empty())
+    if (draw.any() && output.empty())
         throw std::runtime_error("--draw needs --output");
+    if (extension != "png" && extension != "jpg")
+        throw std::runtime_error("--ext must be png or jpg, got " + extension);
 
     FileStorage params;
     if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))
         throw std::runtime_error("cannot open " + paramsPath);
     const LineMethod method = makeLineMethod(parser.get<std::string>("method"),
                                              params.isOpened() ? params.root() : FileNode());
+    if (draw.ofStages() && !method.lsdAdvance)
+        throw std::runtime_error("--draw=filter, groups or merge needs an LSDAdvance method, not " + method.name);
     FrameSource source(input);
     if (!output.empty() && !utils::fs::createDirectories(output))
         throw std::runtime_error("cannot create the output folder " + output);
@@ -94,16 +396,25 @@ int run(const CommandLineParser& parser)
         tm.stop();
         summary.add(lines, tm.getTimeMilli(), longLength);
 
-        if (!output.empty())
+        if (!output.empty() && writeTxt)
             ximgproc::writeSegments(utils::fs::join(output, stem + ".txt"), lines);
-        if (draw)
+        if (draw.lines)
         {
             Mat canvas;
             cvtColor(gray, canvas, COLOR_GRAY2BGR);
             drawer->drawSegments(canvas, lines);
-            const String png = utils::fs::join(output, stem + ".png");
-            if (!imwrite(png, canvas))
-                throw std::runtime_error("cannot write " + png);
+            writeImage(utils::fs::join(output, stem + "." + extension), canvas);
+        }
+        if (draw.ofStages())
+        {
+            const Stages stages(*method.lsdAdvance);
+            const StageCanvas canvas(gray, zoomRegion(zoom, gray.size()));
+            if (draw.filter)
+                writeImage(utils::fs::join(output, stem + "_filter." + extension), drawFilter(canvas, stages));
+            if (draw.groups)
+                writeImage(utils::fs::join(output, stem + "_groups." + extension), drawGroups(canvas, stages));
+            if (draw.merge)
+                writeImage(utils::fs::join(output, stem + "_merge." + extension), drawMerge(canvas, stages));
         }
         if (!source.isSingleImage())
         {
@@ -120,8 +431,13 @@ int run(const CommandLineParser& parser)
 
     summary.print(method.name, longLength);
     if (!output.empty())
-        std::printf("wrote %zu segment file(s)%s to %s\n", summary.images, draw ? " and drawings" : "",
-                    output.c_str());
+    {
+        if (writeTxt)
+            std::printf("wrote %zu segment file(s)%s to %s\n", summary.images, draw.any() ? " and drawings" : "",
+                        output.c_str());
+        else
+            std::printf("wrote the drawings of %zu image(s) to %s\n", summary.images, output.c_str());
+    }
     return 0;
 }
 
@@ -136,7 +452,15 @@ int main(int argc, char** argv)
         "{method m | lsdadvance | one of: " + std::string(lineMethodNames()) + " }"
         "{sequence |            | the images of a folder (in name order) or a video are consecutive frames: "
                                  "LSDAdvance's inter-frame factor is on; otherwise every image is independent }"
-        "{draw     |            | also write <stem>.png, the segments drawn on the image (needs --output) }"
+        "{draw     |            | also write drawings (needs --output), a comma-separated list: lines (<stem>.png, the "
+                                 "segments on the image; --draw alone means lines); for LSDAdvance methods filter "
+                                 "(<stem>_filter.png: kept and dropped by the length filter), groups (<stem>_groups.png: "
+                                 "the merge groups in colours), merge (<stem>_merge.png: fused segments and their pieces); "
+                                 "stages = filter,groups,merge }"
+        "{ext      | png        | file type of the drawings: png or jpg }"
+        "{zoom     |            | the filter, groups and merge drawings show only this region x,y,width,height (px) "
+                                 "of the image, enlarged to about 900 px wide }"
+        "{no-segments |         | with --output, write only the drawings, not <stem>.txt }"
         "{params p |            | YAML/XML of LSDAdvance parameters saved with write(), for the lsdadvance method }"
         "{long     | 60         | length in pixels from which a segment counts as long }";
     CommandLineParser parser(argc, argv, keys);

@@ -7,7 +7,8 @@
 #
 # In-tree build check: builds OpenCV (same version as Debian's libopencv-dev, from Debian's
 # source package) with this checkout as an extra module, exactly as opencv_contrib modules are
-# built, then runs the in-tree opencv_test_lsd_advance and imports the Python bindings.
+# built, then runs the in-tree opencv_test_lsd_advance, imports the Python bindings and runs the
+# Python tests (python/test) on that cv2.
 #
 # Environment:
 #   LSD_ADVANCE_INTREE_DIR  scratch dir (default: <repo>/build-intree); holds modules/lsd_advance
@@ -15,7 +16,7 @@
 #                           from the folder name) and the OpenCV build dir opencv-build/
 #   OPENCV_SOURCE_DIR       OpenCV source tree with contrib/ (default: the one
 #                           scripts/fetch_opencv_source.sh fetches)
-#   LSD_ADVANCE_INTREE_PYTHON=0  skip the cv2 bindings build and import check
+#   LSD_ADVANCE_INTREE_PYTHON=0  skip the cv2 bindings build, import check and Python tests
 #   LSD_ADVANCE_DATA_DIR    passed through to the tests
 set -euo pipefail
 
@@ -134,6 +135,10 @@ if [ "$WITH_PYTHON" = 1 ]; then
   section "Python import check"
   PYTHONPATH="$BUILD/python_loader" LD_LIBRARY_PATH="$BUILD/lib" /usr/bin/python3 -c \
     'import cv2; f = cv2.ximgproc.createLSDAdvance; print("cv2", cv2.__version__, "from", cv2.__file__, "->", f.__doc__.splitlines()[0] if f.__doc__ else f)'
+
+  section "Python tests on the in-tree cv2 (python/test with LSD_ADVANCE_PY_BACKEND=cv2)"
+  LSD_ADVANCE_PY_BACKEND=cv2 PYTHONPATH="$BUILD/python_loader" LD_LIBRARY_PATH="$BUILD/lib" \
+    bash "$REPO/scripts/test_python.sh" "$BUILD"
 fi
 
 section "in-tree check passed"

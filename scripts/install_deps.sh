@@ -5,18 +5,22 @@
 #
 # Usage: scripts/install_deps.sh [--intree | --fuzz]
 #
-# Installs the Debian packages needed to build lsd_advance standalone against Debian's OpenCV
+# Installs the Debian packages needed to build lsd_advance standalone against Debian's OpenCV,
+# its Python module and tests and its API docs
 # (and, with --intree, what scripts/check_intree.sh needs to build OpenCV from source; with
 # --fuzz, clang and its libFuzzer/sanitizer runtimes for scripts/fuzz.sh).
 # Does nothing (no apt at all) when every package is already installed. Uses sudo only when
 # not root.
 set -euo pipefail
 
+# The Python module (pybind11) and its tests; doxygen + bibtex (texlive-binaries) for scripts/docs.sh.
 PACKAGES=(build-essential cmake pkg-config dpkg-dev
-          libopencv-dev libopencv-contrib-dev opencv-doc)
+          libopencv-dev libopencv-contrib-dev opencv-doc
+          python3-dev python3-numpy python3-opencv python3-pytest pybind11-dev python3-pybind11
+          doxygen texlive-binaries)
 if [ "${1:-}" = "--intree" ]; then
   # OpenCV's own build (Debian's source package has no 3rdparty/: use system codecs)
-  PACKAGES+=(zlib1g-dev libjpeg-dev libpng-dev libtiff-dev libwebp-dev ninja-build python3 python3-dev python3-numpy)
+  PACKAGES+=(zlib1g-dev libjpeg-dev libpng-dev libtiff-dev libwebp-dev ninja-build python3)
 elif [ "${1:-}" = "--fuzz" ]; then
   PACKAGES+=(clang libclang-rt-14-dev)
 fi

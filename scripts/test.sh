@@ -7,8 +7,9 @@
 #
 # Installs the Debian dependencies, fetches Debian's OpenCV source package of the installed
 # version (for OpenCV's test framework `ts`, which Debian does not package), builds the module
-# standalone with tests, runs every unit test of opencv_test_lsd_advance and a short perf smoke
-# run of opencv_perf_lsd_advance. Ends with the line `tests: N passed, M failed`; exits non-zero
+# standalone with tests and the Python module, runs every unit test of opencv_test_lsd_advance,
+# the Python tests (scripts/test_python.sh) and a short perf smoke run of opencv_perf_lsd_advance.
+# Ends with the line `tests: N passed, M failed` (C++ and Python tests together); exits non-zero
 # on any failure.
 #
 # Environment:
@@ -68,6 +69,19 @@ if [ "$test_rc" -eq 0 ] && [ "$passed" -eq 0 ] && [ "$failed" -eq 0 ]; then
   test_rc=1
 fi
 
+section "Python tests: scripts/test_python.sh"
+PY_LOG="$BUILD/python_tests.log"
+py_rc=0
+bash "$REPO/scripts/test_python.sh" "$BUILD" 2>&1 | tee "$PY_LOG" || py_rc=${PIPESTATUS[0]}
+py_rc=${py_rc:-0}
+py_passed="$(sed -nE 's/^python tests: ([0-9]+) passed, ([0-9]+) failed$/\1/p' "$PY_LOG" | tail -n1)"
+py_failed="$(sed -nE 's/^python tests: ([0-9]+) passed, ([0-9]+) failed$/\2/p' "$PY_LOG" | tail -n1)"
+py_passed="${py_passed:-0}"; py_failed="${py_failed:-1}"
+if [ "$py_rc" -ne 0 ] && [ "$py_failed" -eq 0 ]; then py_failed=1; fi
+echo "C++ tests: $passed passed, $failed failed; Python tests: $py_passed passed, $py_failed failed"
+passed=$((passed + py_passed))
+failed=$((failed + py_failed))
+
 section "perf smoke run: opencv_perf_lsd_advance"
 perf_rc=0
 if [ -x "$BUILD/opencv_perf_lsd_advance" ]; then
@@ -90,6 +104,6 @@ if [ -n "$skipped" ]; then
 else
   echo "tests: $passed passed, $failed failed"
 fi
-if [ "$test_rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$perf_rc" -ne 0 ]; then
+if [ "$test_rc" -ne 0 ] || [ "$py_rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$perf_rc" -ne 0 ]; then
   exit 1
 fi

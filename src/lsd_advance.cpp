@@ -58,6 +58,7 @@ constexpr ParamRange kLengthWeight = { "lengthWeight", 0, false, 1, false, "" };
 constexpr ParamRange kProximityRatio = { "proximityRatio", 0, true, 10, false, "" };
 constexpr ParamRange kMergeThreshold = { "mergeThreshold", 0, false, 1, false, "" };
 constexpr ParamRange kMaxPerpendicularOffset = { "maxPerpendicularOffset", 0, false, 100, false, " px" };
+constexpr ParamRange kLengthThresholdScale = { "lengthThresholdScale", 0, true, 10, false, "" };
 
 // Validates value against its range (finite, inside the bounds) and stores it.
 template <typename T>
@@ -90,6 +91,11 @@ double elapsedMs(int64 since)
 class LSDAdvanceImpl CV_FINAL : public LSDAdvance
 {
 public:
+    LSDAdvanceImpl() {}
+    // Not copyable: frame holds pointers into itself.
+    LSDAdvanceImpl(const LSDAdvanceImpl&) = delete;
+    LSDAdvanceImpl& operator=(const LSDAdvanceImpl&) = delete;
+
     void detect(InputArray image, OutputArray lines) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
@@ -100,22 +106,21 @@ public:
         // LSD's resize throws on an image that scales to no pixel; such an image has no segment.
         if (baseDetector != BASE_LSD ||
             (saturate_cast<int>(gray.cols * lsd.scale) > 0 && saturate_cast<int>(gray.rows * lsd.scale) > 0))
-            baseSegments->detect(gray, frame.base);
+            baseSegments->detect(gray, frame.incoming);
         else
-            frame.base.clear();
-        runStages(frame.base, elapsedMs(start), lines);
+            frame.incoming.clear();
+        runStages(elapsedMs(start), lines);
     }
 
     void processSegments(InputArray segments, OutputArray lines) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        std::vector<Vec4f>& base = frame.base;
-        lsda::toSegments(segments, "LSDAdvance::processSegments: segments", base);
-        if (!checkRange(Mat(base), true, nullptr, -kMaxCoordinate, kMaxCoordinate))
+        lsda::toSegments(segments, "LSDAdvance::processSegments: segments", frame.incoming);
+        if (!checkRange(Mat(frame.incoming), true, nullptr, -kMaxCoordinate, kMaxCoordinate))
             CV_Error_(Error::StsOutOfRange,
                       ("LSDAdvance::processSegments: segment coordinates must be finite and within "
                        "[-%g, %g) px", kMaxCoordinate, kMaxCoordinate));
-        runStages(base, 0.0, lines);
+        runStages(0.0, lines);
     }
 
     void reset() CV_OVERRIDE
@@ -125,6 +130,33 @@ public:
     }
 
     LSDAdvanceStats getLastStats() const CV_OVERRIDE { return lastStats; }
+
+    void getLastStageOutputs(OutputArray base, OutputArray filtered, OutputArray groupLabels,
+                             OutputArray merged) const CV_OVERRIDE
+    {
+        CV_INSTRUMENT_REGION();
+        const std::vector<Vec4f> none;
+        Mat(frame.base).copyTo(base);
+        Mat(frame.filtered ? *frame.filtered : none).copyTo(filtered);
+        Mat(frame.merged ? *frame.merged : none).copyTo(merged);
+        std::vector<int> labels;
+        if (frame.grouped)
+        {
+            // Numbered only when they hold two or more segments, as LSDAdvanceStats::mergeGroups counts them.
+            const lsda::SegmentGroups& groups = frame.groups;
+            labels.assign(groups.members.size(), -1);
+            int next = 0;
+            for (int g = 0; g < groups.count(); g++)
+            {
+                if (groups.offsets[g + 1] - groups.offsets[g] < 2)
+                    continue;
+                for (int k = groups.offsets[g]; k < groups.offsets[g + 1]; k++)
+                    labels[groups.members[k]] = next;
+                next++;
+            }
+        }
+        Mat(labels).copyTo(groupLabels);
+    }
 
     void setLsdRefine(int v) CV_OVERRIDE
     {
@@ -230,6 +262,8 @@ public:
         reset();
     }
     int getLengthThreshold() const CV_OVERRIDE { return (int)lengthThreshold; }
+    void setLengthThresholdScale(double v) CV_OVERRIDE { assign(lengthThresholdScale, v, kLengthThresholdScale); reset(); }
+    double getLengthThresholdScale() const CV_OVERRIDE { return lengthThresholdScale; }
 
     void setMergeStrategy(int v) CV_OVERRIDE
     {
@@ -354,9 +388,13 @@ private:
         void (LSDAdvanceImpl::*set)(bool);
     };
 
-    // Stages 1-3 in the configured order on the base segments; fills lastStats.
-    void runStages(std::vector<Vec4f>& base, double baseMs, OutputArray lines)
+    // Stages 1-3 in the configured order on the segments in frame.incoming, which become the
+    // frame's base segments; fills lastStats and the stage outputs of getLastStageOutputs.
+    void runStages(double baseMs, OutputArray lines)
     {
+        // Only a call that got this far replaces the previous call's stage outputs.
+        frame.base.swap(frame.incoming);
+        const std::vector<Vec4f>& base = frame.base;
         LSDAdvanceStats stats;
         stats.baseSegments = (int)base.size();
         stats.baseMs = baseMs;
@@ -366,21 +404,20 @@ private:
         const int64 t = getTickCount();
         const double unitMinLength = lengthFilterMode == LENGTH_FILTER_NONE
                                          ? 0.0
-                                         : lsda::adaptiveMinLength(base, 1.0, lengthThreshold);
+                                         : lengthThresholdScale * lsda::adaptiveMinLength(base, 1.0, lengthThreshold);
         stats.filterMs = elapsedMs(t);
 
-        std::vector<Vec4f>& work = frame.work;
-        std::vector<Vec4f>& out = frame.out;
         if (stageOrder == FILTER_THEN_MERGE)
         {
-            filterStage(base, unitMinLength, stats, work);
-            mergeStage(work, stats, out);
+            frame.filtered = &filterStage(base, unitMinLength, stats, frame.work);
+            frame.merged = &mergeStage(*frame.filtered, stats, frame.out);
         }
         else
         {
-            mergeStage(base, stats, work);
-            filterStage(work, unitMinLength, stats, out);
+            frame.merged = &mergeStage(base, stats, frame.work);
+            frame.filtered = &filterStage(*frame.merged, unitMinLength, stats, frame.out);
         }
+        const std::vector<Vec4f>& out = stageOrder == FILTER_THEN_MERGE ? *frame.merged : *frame.filtered;
         stats.outputSegments = (int)out.size();
         Mat(out).copyTo(lines);
         // The frame counts only once its output is delivered.
@@ -408,29 +445,33 @@ private:
         }
     }
 
-    void filterStage(std::vector<Vec4f>& in, double unitMinLength, LSDAdvanceStats& stats,
-                     std::vector<Vec4f>& kept) const
+    // Returns the stage's output: kept, or in itself when the filter is off (no copy).
+    const std::vector<Vec4f>& filterStage(const std::vector<Vec4f>& in, double unitMinLength,
+                                          LSDAdvanceStats& stats, std::vector<Vec4f>& kept) const
     {
         const int64 t = getTickCount();
-        if (lengthFilterMode == LENGTH_FILTER_NONE)
-            kept.swap(in);
-        else
+        const std::vector<Vec4f>* out = &in;
+        if (lengthFilterMode != LENGTH_FILTER_NONE)
         {
             stats.alpha = frameAlpha(in, unitMinLength);
             stats.minLength = stats.alpha * unitMinLength;
             lsda::dropShortSegments(in, stats.minLength, kept);
+            out = &kept;
         }
-        stats.filteredSegments = (int)kept.size();
+        stats.filteredSegments = (int)out->size();
         stats.filterMs += elapsedMs(t);
+        return *out;
     }
 
-    void mergeStage(std::vector<Vec4f>& in, LSDAdvanceStats& stats, std::vector<Vec4f>& merged)
+    // Returns the stage's output: merged, or in itself when merging is off (no copy).
+    const std::vector<Vec4f>& mergeStage(const std::vector<Vec4f>& in, LSDAdvanceStats& stats,
+                                         std::vector<Vec4f>& merged)
     {
-        if (merging.strategy == lsda::MergeStrategy::NONE)
+        frame.grouped = merging.strategy != lsda::MergeStrategy::NONE;
+        if (!frame.grouped)
         {
-            merged.swap(in);
-            stats.mergedSegments = (int)merged.size();
-            return;
+            stats.mergedSegments = (int)in.size();
+            return in;
         }
         int64 t = getTickCount();
         lsda::SegmentGroups& groups = frame.groups;
@@ -443,6 +484,7 @@ private:
         lsda::mergeGroups(in, groups, merging, merged, frame.merging);
         stats.mergedSegments = (int)merged.size();
         stats.mergingMs = elapsedMs(t);
+        return merged;
     }
 
     // The persisted parameters: one table drives write() and read().
@@ -486,6 +528,7 @@ private:
             { "proximityRatio", &LSDAdvanceImpl::getProximityRatio, &LSDAdvanceImpl::setProximityRatio },
             { "mergeThreshold", &LSDAdvanceImpl::getMergeThreshold, &LSDAdvanceImpl::setMergeThreshold },
             { "maxPerpendicularOffset", &LSDAdvanceImpl::getMaxPerpendicularOffset, &LSDAdvanceImpl::setMaxPerpendicularOffset },
+            { "lengthThresholdScale", &LSDAdvanceImpl::getLengthThresholdScale, &LSDAdvanceImpl::setLengthThresholdScale },
             { "fldDistanceThreshold", &LSDAdvanceImpl::getFldDistanceThreshold, &LSDAdvanceImpl::setFldDistanceThreshold },
             { "fldCannyThreshold1", &LSDAdvanceImpl::getFldCannyThreshold1, &LSDAdvanceImpl::setFldCannyThreshold1 },
             { "fldCannyThreshold2", &LSDAdvanceImpl::getFldCannyThreshold2, &LSDAdvanceImpl::setFldCannyThreshold2 },
@@ -515,6 +558,7 @@ private:
     int lengthFilterMode = LENGTH_FILTER_INTERFRAME;
     int stageOrder = MERGE_THEN_FILTER;
     lsda::LengthThreshold lengthThreshold = lsda::LengthThreshold::CAPPED;
+    double lengthThresholdScale = 1.0;
     lsda::GroupingParams grouping;
     lsda::MergeParams merging;
 
@@ -522,10 +566,16 @@ private:
     lsda::FldParams fld;
     lsda::EdParams ed;
     Ptr<lsda::BaseSegmentDetector> baseSegments;  // built on first use after a base parameter changes
-    // Buffers of the stages, kept from frame to frame so that a sequence does not allocate.
+    // Buffers of the stages, kept from frame to frame so that a sequence does not allocate. They
+    // also hold the last call's stage outputs (getLastStageOutputs): a stage that is off passes
+    // its input on, so filtered and merged point into base, work or out.
     struct FrameWorkspace
     {
+        std::vector<Vec4f> incoming;  // segments of the current call until its stages run
         std::vector<Vec4f> base, work, out;
+        const std::vector<Vec4f>* filtered = nullptr;  // stage 1's output (nullptr before the first call)
+        const std::vector<Vec4f>* merged = nullptr;    // stage 3's output
+        bool grouped = false;                          // groups partition stage 2's input
         lsda::SegmentGroups groups;
         lsda::GroupingWorkspace grouping;
         lsda::MergeWorkspace merging;

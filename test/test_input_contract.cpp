@@ -408,6 +408,7 @@ std::vector<RealSetter> realSetters()
         { "proximityRatio", &LSDAdvance::setProximityRatio, 0, 10, false },
         { "mergeThreshold", &LSDAdvance::setMergeThreshold, 0, 1, true },
         { "maxPerpendicularOffset", &LSDAdvance::setMaxPerpendicularOffset, 0, 100, true },
+        { "lengthThresholdScale", &LSDAdvance::setLengthThresholdScale, 0, 10, false },
     };
 }
 

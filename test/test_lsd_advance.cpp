@@ -199,6 +199,19 @@ TEST(LSDAdvance_Detect, stats_report_every_stage_in_the_paper_order)
     EXPECT_GE(stats.mergingMs, 0.0);
 }
 
+TEST(LSDAdvance_Detect, length_threshold_scale_multiplies_the_threshold_and_keeps_more_segments)
+{
+    const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    ASSERT_FALSE(img.empty());
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    const std::vector<Vec4f> full = detectLines(detector, img);
+    detector->setLengthThresholdScale(0.5);
+    const std::vector<Vec4f> half = detectLines(detector, img);
+    EXPECT_NEAR(0.5 * lsda::adaptiveMinLength(detectBase(img), 1.0, lsda::LengthThreshold::CAPPED),
+                detector->getLastStats().minLength, 1e-9);
+    EXPECT_GT(half.size(), full.size());
+}
+
 TEST(LSDAdvance_Detect, stats_report_every_stage_when_merging_first)
 {
     const Mat img = clutterImage(7);

@@ -50,6 +50,7 @@ std::vector<RealParameter> realParameters()
         { "proximityRatio", &LSDAdvance::setProximityRatio, &LSDAdvance::getProximityRatio, 1.0, { 0.001, 10 }, { 0.0, 10.5, kNaN } },
         { "mergeThreshold", &LSDAdvance::setMergeThreshold, &LSDAdvance::getMergeThreshold, 0.6, { 0.0, 1.0 }, { -0.1, 1.1, kNaN } },
         { "maxPerpendicularOffset", &LSDAdvance::setMaxPerpendicularOffset, &LSDAdvance::getMaxPerpendicularOffset, 1.5, { 0.0, 100 }, { -0.1, 101, kNaN, kInf } },
+        { "lengthThresholdScale", &LSDAdvance::setLengthThresholdScale, &LSDAdvance::getLengthThresholdScale, 1.0, { 0.01, 10, 0.5 }, { 0.0, -1, 10.5, kNaN, kInf } },
         { "fldDistanceThreshold", &LSDAdvance::setFldDistanceThreshold, &LSDAdvance::getFldDistanceThreshold, 1.414213562, { 100, 0.5 }, { 0.0, -1, 100.5, kNaN } },
         { "fldCannyThreshold1", &LSDAdvance::setFldCannyThreshold1, &LSDAdvance::getFldCannyThreshold1, 50, { 100000, 0.5 }, { 0.0, -1, 100001, kInf } },
         { "fldCannyThreshold2", &LSDAdvance::setFldCannyThreshold2, &LSDAdvance::getFldCannyThreshold2, 50, { 100000, 0.5 }, { 0.0, -1, 100001, kNaN } },

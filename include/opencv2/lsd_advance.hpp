@@ -11,10 +11,17 @@
 /** @defgroup lsd_advance Improved line segment detection for SLAM front ends
 
 LSDAdvance post-processes the segments of OpenCV's line segment detector (@cite Rafael12) in the
-three stages of @cite Guan2026: adaptive length suppression with an inter-frame factor, angle and
-endpoint grouping, and similarity-ordered merging. It returns fewer, longer segments than LSD,
-in LSD's format and orientation, so that it can replace LSD, FastLineDetector or EdgeDrawing in
-existing code with one line.
+three stages of the method of Guan, Qian and Du @cite Guan2026 : adaptive length suppression with
+an inter-frame factor, angle and endpoint grouping, and similarity-ordered merging. It returns
+fewer, longer segments than LSD, in LSD's format and orientation, so that it can replace LSD,
+FastLineDetector (@cite Lee14) or EdgeDrawing's EDLines (@cite akinlar2011edlines) in existing
+code with one line; either of these two can also be its base detector.
+
+The module also gives its lines as line_descriptor KeyLines for the LBD descriptor
+(@cite LBD), and the evaluation tools behind its documented results: the structural
+precision/recall protocol on YorkUrban-LineSegment (@cite Denis2008, @cite Cho2018), line
+matching under a homography (HPatches, @cite Balntas2017) and epipolar checks on calibrated
+sequences (KITTI, @cite Geiger2012).
 
 The module lives in namespace cv::ximgproc, next to the detectors it complements.
 */

@@ -13,7 +13,8 @@ namespace ximgproc {
 //! @addtogroup lsd_advance
 //! @{
 
-/** @brief Thresholds of the structural precision/recall protocol (YorkUrban-LineSegment).
+/** @brief Thresholds of the structural precision/recall protocol (YorkUrban-LineSegment: the
+images of the York Urban DB @cite Denis2008 with the line-segment annotations of @cite Cho2018).
 
 A detection is a candidate for a ground-truth segment g when its centre lies within
 maxDistance of g's supporting line and its undirected angle differs from g's by at most
@@ -24,10 +25,10 @@ struct CV_EXPORTS_W_SIMPLE StructuralMatchParams
 {
     StructuralMatchParams() : maxDistance(1.0), maxAngle(5.0), minCoverage(0.75), offset(0.5) {}
 
-    CV_PROP_RW double maxDistance;  //!< pixels, from a detection's centre to g's line. Default 1.
-    CV_PROP_RW double maxAngle;     //!< degrees, between undirected directions. Default 5.
+    CV_PROP_RW double maxDistance;  //!< pixels, from a detection's centre to g's line, >= 0. Default 1.
+    CV_PROP_RW double maxAngle;     //!< degrees, between undirected directions, in [0, 90]. Default 5.
     CV_PROP_RW double minCoverage;  //!< share of g's length the candidates must cover, in (0, 1]. Default 0.75.
-    /** Added to every detected coordinate before matching, pixels. Default 0.5: OpenCV's
+    /** Added to every detected coordinate before matching, pixels, finite. Default 0.5: OpenCV's
     detectors put pixel centres at integer coordinates, while YorkUrban's ground truth is in
     continuous coordinates where the image spans [0, W] x [0, H]. */
     CV_PROP_RW double offset;
@@ -56,7 +57,9 @@ struct CV_EXPORTS_W_SIMPLE StructuralScore
 @param detections Detected segments, N x 1 (or 1 x N) CV_32FC4 or std::vector<Vec4f>, (x1, y1, x2, y2)
 in OpenCV's pixel-centre convention (params.offset is added to them).
 @param groundTruth Ground-truth segments in the same layout, in the data set's coordinates.
-@param params Thresholds and coordinate offset.
+@param params Thresholds and coordinate offset. Default StructuralMatchParams() (1 px, 5 deg,
+75 %, +0.5 px).
+@return Precision, recall and the lengths and counts behind them, for this image.
 
 Duplicated detections on the same ground truth each count as matched (the protocol sums the
 clipped candidate lengths); a detection that is a candidate of several ground-truth segments
@@ -65,17 +68,27 @@ counts at most its own length. Zero-length ground-truth segments are ignored.
 CV_EXPORTS_W StructuralScore evaluateStructural(InputArray detections, InputArray groundTruth,
                                                 const StructuralMatchParams& params = StructuralMatchParams());
 
-/** @brief F-score of mean precision and mean recall: 2 AP AR / (AP + AR), 0 when both are 0. */
+/** @brief F-score of mean precision and mean recall.
+@param averagePrecision AP, the mean of the per-image precisions, in [0, 1].
+@param averageRecall AR, the mean of the per-image recalls, in [0, 1].
+@return 2 AP AR / (AP + AR), 0 when both are 0. */
 CV_EXPORTS_W double fScore(double averagePrecision, double averageRecall);
 
-/** @brief Share of segments at least minLength pixels long (0 for no segments). */
+/** @brief Share of long segments ("long-line ratio").
+@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<Vec4f>).
+@param minLength Pixels. Default 60 (the long-line length of the evaluation protocol).
+@return Share of the segments at least minLength long, in [0, 1] (0 for no segments). */
 CV_EXPORTS_W double longSegmentShare(InputArray lines, double minLength = 60.0);
 
 /** @brief Reads segments from a text file, one `x1 y1 x2 y2` per line (spaces or commas).
-Blank lines and lines starting with '#' are skipped; any other malformed line throws. */
+Blank lines and lines starting with '#' are skipped; any other malformed line throws.
+@param path Path of the file.
+@return The segments in file order. */
 CV_EXPORTS_W std::vector<Vec4f> readSegments(const String& path);
 
-/** @brief Writes segments to a text file, one `x1 y1 x2 y2` per line with 3 decimals. */
+/** @brief Writes segments to a text file, one `x1 y1 x2 y2` per line with 3 decimals.
+@param path Path of the file, created or overwritten; throws when it cannot be written.
+@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<Vec4f>). */
 CV_EXPORTS_W void writeSegments(const String& path, InputArray lines);
 
 /** @brief One image of a line-segment data set and its ground truth. */
@@ -90,27 +103,34 @@ struct CV_EXPORTS_W_SIMPLE LabelledImage
 The images listed in `list.txt` (one NAME per line) are loaded in that order when the file
 exists, otherwise every JPEG image of `images/` in name order. Throws when the folder, an image or its
 ground truth is missing.
+@param folder The data set's folder, holding `images/`, `gt/` and optionally `list.txt`
+(@cite Denis2008, @cite Cho2018).
+@return The images with their ground truth, in the order above.
 */
 CV_EXPORTS_W std::vector<LabelledImage> loadYorkUrban(const String& folder);
 
-/** @brief A KITTI-odometry-style sequence: left images, projection matrices and poses. */
+/** @brief A KITTI-odometry-style sequence (@cite Geiger2012): left images, projection matrices
+and poses. */
 struct CV_EXPORTS_W_SIMPLE SequenceData
 {
     CV_PROP_RW std::vector<String> imagePaths;  //!< frames in name order
-    CV_PROP_RW Mat P0;                          //!< 3x4 CV_64F projection matrix of the left camera
+    CV_PROP_RW Mat P0;                          //!< 3x4 CV_64F projection matrix of the left camera (empty if absent)
     CV_PROP_RW Mat P1;                          //!< 3x4 CV_64F projection matrix of the right camera (empty if absent)
     CV_PROP_RW std::vector<Mat> poses;          //!< 3x4 CV_64F [R|t] of each frame in the first frame's coordinates (empty if absent)
 };
 
-/** @brief Loads a sequence folder: `image_l/` (or `image_0/`, or the folder itself) with its
-images in name order, `calib.txt` (rows of 12 numbers, optionally prefixed `P0:`) and
-`poses.txt` (12 numbers per frame), both optional. Throws when no image is found, or when
+/** @brief Loads a sequence folder: `image_l/` (or `image_0/`, or `cam0/data/` as in EuRoC
+@cite Burri2016, or the folder itself, the first that holds images) with its PNG, JPEG, PPM,
+PGM or BMP images in name order, `calib.txt` (rows of 12 numbers, optionally prefixed `P0:`)
+and `poses.txt` (12 numbers per frame), both optional. Throws when no image is found, or when
 `poses.txt` exists with a row count different from the number of images.
+@param folder The sequence's folder.
+@return The image paths, and the matrices and poses that the folder holds.
 */
 CV_EXPORTS_W SequenceData loadSequence(const String& folder);
 
 /** @brief Line matching under a known homography: match precision, repeatability and
-localisation error (doc/matching.md).
+localisation error (doc/matching.md), as on the planar scenes of HPatches @cite Balntas2017.
 
 A segment a of image 1 and a segment b of image 2 correspond when a, mapped by H, lies within
 maxDistance of b: both mapped endpoints are at most maxDistance from b's supporting line, and
@@ -144,12 +164,14 @@ corresponds to segment b of image 2 (see HomographyMatchScore).
 @param a Segment (x1, y1, x2, y2) of image 1. @param b Segment of image 2.
 @param H 3x3 homography, CV_32F or CV_64F, mapping image 1 to image 2.
 @param maxDistance Largest perpendicular distance of a mapped endpoint to b's line, pixels, >= 0. Default 3.
-A zero-length b, or an endpoint of a that H sends to infinity, never corresponds.
+@return true when they correspond. A zero-length b, or an endpoint of a that H sends to
+infinity, never corresponds.
 */
 CV_EXPORTS_W bool correspondUnderHomography(const Vec4f& a, const Vec4f& b, InputArray H, double maxDistance = 3.0);
 
 /** @brief Scores line matches between two images related by a homography, with the repeatability
-and localisation error of the two segment sets (the HPatches line protocol, doc/matching.md).
+and localisation error of the two segment sets (the HPatches line protocol, @cite Balntas2017,
+doc/matching.md).
 
 @param segments1 Segments of image 1, N x 1 CV_32FC4 (std::vector<Vec4f>).
 @param segments2 Segments of image 2.
@@ -158,6 +180,7 @@ BinaryDescriptorMatcher::match returns for query = image 1); indices out of rang
 @param H 3x3 homography (CV_32F or CV_64F) mapping image 1 to image 2, invertible.
 @param imageSize1 Size of image 1. @param imageSize2 Size of image 2.
 @param maxDistance Correspondence distance in pixels (correspondUnderHomography), >= 0. Default 3.
+@return Match precision, repeatability, localisation error and the counts behind them.
 */
 CV_EXPORTS_W HomographyMatchScore evaluateHomographyMatches(InputArray segments1, InputArray segments2,
                                                             const std::vector<DMatch>& matches, InputArray H,
@@ -212,14 +235,27 @@ struct CV_EXPORTS_W_SIMPLE EpipolarMatchScore
     CV_PROP_RW double precision;  //!< consistent / (consistent + inconsistent), 0 when both are 0
 };
 
-/** @brief Scores matches (queryIdx into segments1, trainIdx into segments2) with checkEpipolar. */
+/** @brief Scores matches between two frames with checkEpipolar.
+
+@param segments1 Segments of frame 1, N x 1 CV_32FC4 (std::vector<Vec4f>).
+@param segments2 Segments of frame 2.
+@param matches Matches, queryIdx into segments1 and trainIdx into segments2; indices out of
+range throw.
+@param F 3x3 fundamental matrix (CV_32F or CV_64F) with x2^T F x1 = 0, e.g. from
+fundamentalFromPoses() on a KITTI sequence (@cite Geiger2012).
+@param tolerance Pixels, >= 0. Default 2 (as checkEpipolar).
+@param minAngle Degrees, in [0, 90). Default 5 (as checkEpipolar).
+@return The counts of each verdict and the precision over the decided matches.
+*/
 CV_EXPORTS_W EpipolarMatchScore evaluateEpipolarMatches(InputArray segments1, InputArray segments2,
                                                         const std::vector<DMatch>& matches, InputArray F,
                                                         double tolerance = 2.0, double minAngle = 5.0);
 
 /** @brief Reads a 3x3 homography: a text file of 9 numbers (3 rows, HPatches' `H_1_k`), or an
 OpenCV FileStorage file (.xml, .yml, .yaml, .json) whose first top-level node is the 3x3 matrix
-(OpenCV's `H1to3p.xml`). Returns CV_64F; throws on anything else. */
+(OpenCV's `H1to3p.xml`).
+@param path Path of the file; the extension (case-insensitive) selects the format.
+@return The 3x3 homography, CV_64F; throws on anything else or on a non-finite value. */
 CV_EXPORTS_W Mat readHomography(const String& path);
 
 /** @brief A pair of images related by a homography. */
@@ -230,8 +266,10 @@ struct CV_EXPORTS_W_SIMPLE HomographyPair
     CV_PROP_RW Mat H;              //!< 3x3 CV_64F, maps image 1 to image 2
 };
 
-/** @brief Loads an HPatches-style folder: `1.ppm` with `k.ppm` and `H_1_k` for every k >= 2 that
-has both, in increasing k. Throws when `1.ppm` or every pair is missing. */
+/** @brief Loads an HPatches-style folder (@cite Balntas2017): `1.ppm` with `k.ppm` and `H_1_k`
+for every k >= 2 that has both, in increasing k. Throws when `1.ppm` or every pair is missing.
+@param folder The sequence's folder, e.g. an HPatches `v_*` sequence.
+@return One pair (1.ppm, k.ppm, H_1_k) per k. */
 CV_EXPORTS_W std::vector<HomographyPair> loadHomographyPairs(const String& folder);
 
 //! @} lsd_advance

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# This file is part of OpenCV project.
+# It is subject to the license terms in the LICENSE file found in the top-level directory
+# of this distribution and at http://opencv.org/license.html.
+#
+# Usage: bash scripts/test_python.sh <build dir>
+#
+# Runs the Python tests (python/test, pytest) on the module of a standalone build
+# (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), comparing with the build's C++ samples.
+# Prints `python tests: N passed, M failed` last; exits non-zero when a test fails or errors.
+#
+# Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
+# OpenCV build dir of an in-tree build, whose cv2 the caller puts on PYTHONPATH (and
+# LD_LIBRARY_PATH) and whose bin/example_lsd_advance_* samples are compared with;
+# LSD_ADVANCE_DETECT_SAMPLE / LSD_ADVANCE_LBD_SAMPLE override the samples; OPENCV_SAMPLES_DATA_PATH (default: Debian's opencv-doc data);
+# CI=true makes missing data or samples fail instead of skip.
+set -euo pipefail
+
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="$(cd "${1:?usage: test_python.sh <build dir>}" && pwd)"
+PYTHON=/usr/bin/python3  # Debian's, with python3-opencv, python3-numpy and python3-pytest
+
+if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ] && \
+   ! ls "$BUILD"/python/lsd_advance/_lsd_advance*.so >/dev/null 2>&1; then
+  echo "ERROR: no Python module in $BUILD/python/lsd_advance (configure with -DLSD_ADVANCE_PYTHON=ON and build)" >&2
+  echo "python tests: 0 passed, 1 failed"
+  exit 1
+fi
+
+if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ]; then
+  export PYTHONPATH="$BUILD/python${PYTHONPATH:+:$PYTHONPATH}"
+  SAMPLE_PREFIX="$BUILD/"
+else
+  SAMPLE_PREFIX="$BUILD/bin/example_lsd_advance_"  # an OpenCV build dir
+fi
+export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
+export LSD_ADVANCE_DETECT_SAMPLE="${LSD_ADVANCE_DETECT_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_detect}"
+export LSD_ADVANCE_LBD_SAMPLE="${LSD_ADVANCE_LBD_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_lbd_matching}"
+export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in the source tree
+
+REPORT="$(mktemp)"
+trap 'rm -f "$REPORT"' EXIT
+rc=0
+# -p no:cacheprovider: write nothing into the source tree.
+"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/python/test" || rc=$?
+
+read -r passed failed < <("$PYTHON" - "$REPORT" <<'PY'
+import sys
+import xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+suite = root if root.tag == "testsuite" else root.find("testsuite")
+tests, failures, errors, skipped = (int(suite.get(k, 0)) for k in ("tests", "failures", "errors", "skipped"))
+print(tests - failures - errors - skipped, failures + errors)
+PY
+) || { passed=0; failed=1; }
+# pytest exits non-zero also when nothing ran (collection error): count that as a failure.
+if [ "$rc" -ne 0 ] && [ "$failed" -eq 0 ]; then failed=1; fi
+echo "python tests: $passed passed, $failed failed"
+[ "$rc" -eq 0 ] && [ "$failed" -eq 0 ]

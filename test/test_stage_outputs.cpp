@@ -1,0 +1,280 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// LSDAdvance::getLastStageOutputs: each output is what the stage's own function gives on the
+// previous stage's output, for both stage orders and with stages switched off.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+struct StageOutputs
+{
+    std::vector<Vec4f> base, filtered, merged;
+    std::vector<int> labels;
+};
+
+StageOutputs stageOutputsOf(const LSDAdvance& detector)
+{
+    StageOutputs o;
+    detector.getLastStageOutputs(o.base, o.filtered, o.labels, o.merged);
+    return o;
+}
+
+bool bitIdentical(const std::vector<Vec4f>& a, const std::vector<Vec4f>& b)
+{
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec4f)) == 0);
+}
+
+const Mat& buildingImage()
+{
+    static const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    return img;
+}
+
+lsda::GroupingParams groupingParamsOf(const LSDAdvance& d)
+{
+    lsda::GroupingParams p;
+    p.angleBinWidth = d.getAngleBinWidth();
+    p.neighbourBins = d.getAngleBinning() == LSDAdvance::ANGLE_BINS_NEIGHBOURS;
+    p.endpointDistance = d.getEndpointDistance();
+    return p;
+}
+
+lsda::MergeParams mergeParamsOf(const LSDAdvance& d)
+{
+    lsda::MergeParams p;
+    p.strategy = (lsda::MergeStrategy)d.getMergeStrategy();
+    p.baselineRatio = d.getBaselineRatio();
+    p.directionWeight = d.getDirectionWeight();
+    p.proximityWeight = d.getProximityWeight();
+    p.lengthWeight = d.getLengthWeight();
+    p.proximityRatio = d.getProximityRatio();
+    p.mergeThreshold = d.getMergeThreshold();
+    p.maxPerpendicularOffset = d.getMaxPerpendicularOffset();
+    return p;
+}
+
+// The segments stage 2 received: the base segments or stage 1's output, by the stage order.
+const std::vector<Vec4f>& stage2Input(const LSDAdvance& d, const StageOutputs& o)
+{
+    return d.getStageOrder() == LSDAdvance::FILTER_THEN_MERGE ? o.filtered : o.base;
+}
+
+// Stage 1's input: the base segments or stage 3's output, by the stage order.
+const std::vector<Vec4f>& stage1Input(const LSDAdvance& d, const StageOutputs& o)
+{
+    return d.getStageOrder() == LSDAdvance::FILTER_THEN_MERGE ? o.base : o.merged;
+}
+
+// Runs a short sequence (so that inter-frame alpha acts) and checks the last frame's outputs
+// with `check` after every frame.
+void forEachFrameOfBothOrders(const std::function<void(const LSDAdvance&, const std::vector<Vec4f>&)>& check)
+{
+    const Mat& img = buildingImage();
+    ASSERT_FALSE(img.empty());
+    const Mat frames[] = { img, img(Rect(0, 0, img.cols * 3 / 4, img.rows)), img(Rect(0, 0, img.cols / 2, img.rows)) };
+    for (int order : { (int)LSDAdvance::FILTER_THEN_MERGE, (int)LSDAdvance::MERGE_THEN_FILTER })
+    {
+        SCOPED_TRACE(order);
+        Ptr<LSDAdvance> detector = createLSDAdvance();
+        detector->setStageOrder(order);
+        for (const Mat& frame : frames)
+        {
+            std::vector<Vec4f> lines;
+            detector->detect(frame, lines);
+            check(*detector, lines);
+        }
+    }
+}
+
+TEST(LSDAdvance_StageOutputs, base_segments_are_what_the_base_LSD_alone_returns)
+{
+    const Mat& img = buildingImage();
+    ASSERT_FALSE(img.empty());
+    Ptr<LSDAdvance> d = createLSDAdvance();
+    std::vector<Vec4f> lines, lsdAlone;
+    d->detect(img, lines);
+    createLineSegmentDetector(d->getLsdRefine(), d->getLsdScale(), d->getLsdSigmaScale(), d->getLsdQuant(),
+                              d->getLsdAngleTolerance(), d->getLsdLogEps(), d->getLsdDensityThreshold(),
+                              d->getLsdNumBins())
+        ->detect(img, lsdAlone);
+    const StageOutputs o = stageOutputsOf(*d);
+    ASSERT_GT(lsdAlone.size(), 100u);
+    EXPECT_TRUE(bitIdentical(lsdAlone, o.base));
+}
+
+TEST(LSDAdvance_StageOutputs, filtered_segments_are_the_length_filter_with_the_reported_minLength)
+{
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>&) {
+        const StageOutputs o = stageOutputsOf(d);
+        const LSDAdvanceStats stats = d.getLastStats();
+        ASSERT_GT(stats.minLength, 0.0);
+        std::vector<Vec4f> expected;
+        lsda::dropShortSegments(stage1Input(d, o), stats.minLength, expected);
+        EXPECT_LT(expected.size(), stage1Input(d, o).size());  // the filter dropped something
+        EXPECT_TRUE(bitIdentical(expected, o.filtered));
+    });
+}
+
+TEST(LSDAdvance_StageOutputs, group_labels_partition_the_stage2_input_as_groupSegments_does)
+{
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>&) {
+        const StageOutputs o = stageOutputsOf(d);
+        const std::vector<Vec4f>& input = stage2Input(d, o);
+        ASSERT_EQ(input.size(), o.labels.size());
+        lsda::SegmentGroups groups;
+        lsda::groupSegments(input, groupingParamsOf(d), groups);
+        // Every member of a group has its group's label: -1 for a group of one, otherwise a
+        // label no other group has.
+        std::set<int> used;
+        for (int g = 0; g < groups.count(); g++)
+        {
+            const int first = groups.members[groups.offsets[g]], size = groups.offsets[g + 1] - groups.offsets[g];
+            const int label = o.labels[first];
+            for (int k = groups.offsets[g]; k < groups.offsets[g + 1]; k++)
+                ASSERT_EQ(label, o.labels[groups.members[k]]) << "group " << g;
+            if (size == 1)
+                EXPECT_EQ(-1, label) << "group " << g;
+            else
+                EXPECT_TRUE(label >= 0 && used.insert(label).second) << "group " << g << ", label " << label;
+        }
+        // Numbered 0, 1, 2, ... in the order of their first segment.
+        int next = 0;
+        for (int label : o.labels)
+            if (label >= 0 && label == next)
+                next++;
+            else
+                ASSERT_LT(label, next);
+        ASSERT_GT(next, 10);
+        EXPECT_EQ((int)used.size(), next);
+        EXPECT_EQ(d.getLastStats().mergeGroups, next);
+    });
+}
+
+TEST(LSDAdvance_StageOutputs, merged_segments_are_mergeGroups_of_the_stage2_input)
+{
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>&) {
+        const StageOutputs o = stageOutputsOf(d);
+        const std::vector<Vec4f>& input = stage2Input(d, o);
+        lsda::SegmentGroups groups;
+        lsda::groupSegments(input, groupingParamsOf(d), groups);
+        std::vector<Vec4f> expected;
+        lsda::mergeGroups(input, groups, mergeParamsOf(d), expected);
+        EXPECT_LT(expected.size(), input.size());  // something fused
+        EXPECT_TRUE(bitIdentical(expected, o.merged));
+    });
+}
+
+TEST(LSDAdvance_StageOutputs, the_last_stage_output_is_detect_lines)
+{
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>& lines) {
+        const StageOutputs o = stageOutputsOf(d);
+        EXPECT_TRUE(bitIdentical(lines, d.getStageOrder() == LSDAdvance::FILTER_THEN_MERGE ? o.merged : o.filtered));
+    });
+}
+
+TEST(LSDAdvance_StageOutputs, counts_match_getLastStats)
+{
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>& lines) {
+        const StageOutputs o = stageOutputsOf(d);
+        const LSDAdvanceStats stats = d.getLastStats();
+        EXPECT_EQ(stats.baseSegments, (int)o.base.size());
+        EXPECT_EQ(stats.filteredSegments, (int)o.filtered.size());
+        EXPECT_EQ(stats.mergedSegments, (int)o.merged.size());
+        EXPECT_EQ(stats.outputSegments, (int)lines.size());
+        const int groupsWithTwoOrMore = o.labels.empty() ? 0 : *std::max_element(o.labels.begin(), o.labels.end()) + 1;
+        EXPECT_EQ(stats.mergeGroups, groupsWithTwoOrMore);
+    });
+}
+
+TEST(LSDAdvance_StageOutputs, stages_that_are_off_pass_their_input_on_and_give_no_labels)
+{
+    const Mat& img = buildingImage();
+    ASSERT_FALSE(img.empty());
+    for (int order : { (int)LSDAdvance::FILTER_THEN_MERGE, (int)LSDAdvance::MERGE_THEN_FILTER })
+    {
+        SCOPED_TRACE(order);
+        Ptr<LSDAdvance> d = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+        d->setStageOrder(order);
+        d->setMergeStrategy(LSDAdvance::MERGE_NONE);
+        std::vector<Vec4f> lines;
+        d->detect(img, lines);
+        const StageOutputs o = stageOutputsOf(*d);
+        ASSERT_GT(o.base.size(), 100u);
+        EXPECT_TRUE(bitIdentical(o.base, o.filtered));
+        EXPECT_TRUE(bitIdentical(o.base, o.merged));
+        EXPECT_TRUE(bitIdentical(o.base, lines));
+        EXPECT_TRUE(o.labels.empty());
+
+        // Merging on again: labels come back, one per base segment with MERGE_THEN_FILTER.
+        d->setMergeStrategy(LSDAdvance::MERGE_LONGEST_FIRST);
+        d->detect(img, lines);
+        const StageOutputs merged = stageOutputsOf(*d);
+        EXPECT_EQ(stage2Input(*d, merged).size(), merged.labels.size());
+        EXPECT_TRUE(bitIdentical(stage1Input(*d, merged), merged.filtered));
+    }
+}
+
+TEST(LSDAdvance_StageOutputs, are_empty_before_the_first_call)
+{
+    Ptr<LSDAdvance> d = createLSDAdvance();
+    Mat base(3, 1, CV_32FC4), filtered = base.clone(), labels(3, 1, CV_32S), merged = base.clone();
+    d->getLastStageOutputs(base, filtered, labels, merged);
+    EXPECT_TRUE(base.empty());
+    EXPECT_TRUE(filtered.empty());
+    EXPECT_TRUE(labels.empty());
+    EXPECT_TRUE(merged.empty());
+}
+
+TEST(LSDAdvance_StageOutputs, output_types_are_CV_32FC4_and_CV_32S_columns)
+{
+    Ptr<LSDAdvance> d = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    d->detect(buildingImage(), lines);
+    Mat base, filtered, labels, merged;
+    d->getLastStageOutputs(base, filtered, labels, merged);
+    for (const Mat* m : { &base, &filtered, &merged })
+    {
+        EXPECT_EQ(CV_32FC4, m->type());
+        EXPECT_EQ(1, m->cols);
+    }
+    EXPECT_EQ(CV_32SC1, labels.type());
+    EXPECT_EQ(1, labels.cols);
+    EXPECT_EQ(base.rows, labels.rows);  // MERGE_THEN_FILTER: stage 2 takes the base segments
+}
+
+TEST(LSDAdvance_StageOutputs, processSegments_reports_its_input_as_base_segments)
+{
+    // Two collinear pieces that fuse and one short segment far away that the filter drops.
+    const std::vector<Vec4f> segments = { segmentAt(0, 0, 0, 100), segmentAt(102, 0, 0, 100),
+                                          segmentAt(0, 200, 90, 3), segmentAt(300, 0, 90, 80) };
+    Ptr<LSDAdvance> d = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    d->processSegments(segments, lines);
+    const StageOutputs o = stageOutputsOf(*d);
+    EXPECT_TRUE(bitIdentical(segments, o.base));
+    EXPECT_EQ(std::vector<int>({ 0, 0, -1, -1 }), o.labels);
+    EXPECT_EQ(3u, o.merged.size());
+    EXPECT_TRUE(bitIdentical(lines, o.filtered));
+    EXPECT_EQ(2u, lines.size());
+}
+
+TEST(LSDAdvance_StageOutputs, a_rejected_call_keeps_the_previous_outputs)
+{
+    Ptr<LSDAdvance> d = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    d->detect(buildingImage(), lines);
+    const StageOutputs before = stageOutputsOf(*d);
+    const std::vector<Vec4f> bad = { Vec4f(0, 0, std::numeric_limits<float>::quiet_NaN(), 10) };
+    EXPECT_THROW(d->processSegments(bad, lines), cv::Exception);
+    EXPECT_THROW(d->detect(Mat(10, 10, CV_32FC1, Scalar(0)), lines), cv::Exception);
+    const StageOutputs after = stageOutputsOf(*d);
+    EXPECT_TRUE(bitIdentical(before.base, after.base));
+    EXPECT_TRUE(bitIdentical(before.filtered, after.filtered));
+    EXPECT_TRUE(bitIdentical(before.merged, after.merged));
+    EXPECT_EQ(before.labels, after.labels);
+}
+
+}} // namespace
