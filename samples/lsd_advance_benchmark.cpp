@@ -565,9 +565,9 @@ int main(int argc, char** argv)
         else
         {
             HomographyPair pair;
-            pair.image1Path = samples::findFile(parser.get<String>("image1"));
-            pair.image2Path = samples::findFile(parser.get<String>("image2"));
-            pair.H = readHomography(samples::findFile(parser.get<String>("homography")));
+            pair.image1Path = samples::findFile(parser.get<String>("image1"), true, true);
+            pair.image2Path = samples::findFile(parser.get<String>("image2"), true, true);
+            pair.H = readHomography(samples::findFile(parser.get<String>("homography"), true, true));
             pairs.push_back(pair);
         }
         std::cout << "Homography pairs: " << pairs.size() << " from " << (data.empty() ? pairs[0].image1Path : data)

@@ -82,7 +82,7 @@ int main(int argc, char** argv)
 
     // A folder is read like a sequence folder (its images in name order), one image per file.
     const std::vector<String> paths = utils::fs::isDirectory(input) ? ximgproc::loadSequence(input).imagePaths
-                                                                   : std::vector<String>(1, samples::findFile(input));
+                                                                   : std::vector<String>(1, samples::findFile(input, true, true));
 
     FileStorage params;
     if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))

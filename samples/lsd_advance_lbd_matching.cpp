@@ -53,8 +53,8 @@ void drawMatches(const Mat& gray1, const DescribedLines& lines1, const Mat& gray
 int matchPair(const LineMethod& method, const String& path1, const String& path2, const String& homographyPath,
               const LineMatchParams& params, const String& drawPath)
 {
-    const Mat gray1 = imread(samples::findFile(path1), IMREAD_GRAYSCALE);
-    const Mat gray2 = imread(samples::findFile(path2), IMREAD_GRAYSCALE);
+    const Mat gray1 = imread(samples::findFile(path1, true, true), IMREAD_GRAYSCALE);
+    const Mat gray2 = imread(samples::findFile(path2, true, true), IMREAD_GRAYSCALE);
     if (gray1.empty() || gray2.empty())
         throw std::runtime_error("cannot read " + (gray1.empty() ? path1 : path2));
     std::vector<Vec4f> segments1, segments2;
@@ -71,7 +71,7 @@ int matchPair(const LineMethod& method, const String& path1, const String& path2
     std::printf("matches:         %zu\n", matches.size());
     if (!homographyPath.empty())
     {
-        const Mat H = ximgproc::readHomography(samples::findFile(homographyPath));
+        const Mat H = ximgproc::readHomography(samples::findFile(homographyPath, true, true));
         const ximgproc::HomographyMatchScore s =
             ximgproc::evaluateHomographyMatches(segments1, segments2, matches, H, gray1.size(), gray2.size());
         std::printf("correct:         %d (precision %.3f; mapped within 3 px, overlapping)\n", s.correct, s.precision);
