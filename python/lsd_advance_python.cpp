@@ -387,9 +387,10 @@ void copyFileNode(const FileNode& node, const std::string& key, const py::object
 std::string statsRepr(const LSDAdvanceStats& s)
 {
     return format("LSDAdvanceStats(baseSegments=%d, mergedSegments=%d, filteredSegments=%d, mergeGroups=%d, "
-                  "outputSegments=%d, minLength=%g, alpha=%g, baseMs=%g, filterMs=%g, groupingMs=%g, mergingMs=%g)",
+                  "outputSegments=%d, minLength=%g, minResponse=%g, alpha=%g, baseMs=%g, filterMs=%g, groupingMs=%g, "
+                  "mergingMs=%g)",
                   s.baseSegments, s.mergedSegments, s.filteredSegments, s.mergeGroups, s.outputSegments,
-                  s.minLength, s.alpha, s.baseMs, s.filterMs, s.groupingMs, s.mergingMs);
+                  s.minLength, s.minResponse, s.alpha, s.baseMs, s.filterMs, s.groupingMs, s.mergingMs);
 }
 
 } // namespace
@@ -431,6 +432,7 @@ PYBIND11_MODULE(_lsd_advance, m)
         .def_readwrite("mergeGroups", &LSDAdvanceStats::mergeGroups)
         .def_readwrite("outputSegments", &LSDAdvanceStats::outputSegments)
         .def_readwrite("minLength", &LSDAdvanceStats::minLength)
+        .def_readwrite("minResponse", &LSDAdvanceStats::minResponse)
         .def_readwrite("alpha", &LSDAdvanceStats::alpha)
         .def_readwrite("baseMs", &LSDAdvanceStats::baseMs)
         .def_readwrite("filterMs", &LSDAdvanceStats::filterMs)
@@ -567,6 +569,7 @@ PYBIND11_MODULE(_lsd_advance, m)
         .LSDA_PARAM(LengthFilterMode, mode)
         .LSDA_PARAM(LengthThreshold, rule)
         .LSDA_PARAM(LengthThresholdScale, scale)
+        .LSDA_PARAM(KeepStrongSegments, keep)
         .LSDA_PARAM(MergeStrategy, strategy)
         .LSDA_PARAM(StageOrder, order)
         .LSDA_PARAM(AngleBinWidth, degrees)
@@ -706,6 +709,18 @@ PYBIND11_MODULE(_lsd_advance, m)
         [](const std::string& path, const py::object& lines) { writeSegments(path, toMat(lines, "lines").mat); },
         "path"_a, "lines"_a);
     m.def("loadSequence", &loadSequence, "folder"_a);
+    m.def(
+        "computeLineResponses",
+        [](const py::object& image, const py::object& lines) {
+            const ArrayArg img = toMat(image, "image");
+            const ArrayArg segments = toMat(lines, "lines");
+            Mat responses;
+            computeLineResponses(img.mat, segments.mat, responses);
+            return toNumpy(responses);
+        },
+        "image"_a, "lines"_a,
+        "computeLineResponses(image, lines) -> responses\n\nResponse of each segment (N x 1 float32): "
+        "length / max(width, height) times the squared mean contrast across it / 255.");
     m.def(
         "correspondUnderHomography",
         [](const std::array<float, 4>& a, const std::array<float, 4>& b, const py::object& H, double maxDistance) {

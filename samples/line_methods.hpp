@@ -93,7 +93,7 @@ inline void detectPlVins(const cv::Ptr<cv::LineSegmentDetector>& lsd, const cv::
 }
 
 //! LSDAdvance as the paper describes it: OpenCV's default LSD as the base, the length filter
-//! first, then merging into the baselines of each group.
+//! (by length alone) first, then merging into the baselines of each group.
 inline cv::Ptr<cv::ximgproc::LSDAdvance> paperLSDAdvance()
 {
     using cv::ximgproc::LSDAdvance;
@@ -104,6 +104,7 @@ inline cv::Ptr<cv::ximgproc::LSDAdvance> paperLSDAdvance()
     detector->setStageOrder(LSDAdvance::FILTER_THEN_MERGE);
     detector->setMergeStrategy(LSDAdvance::MERGE_BASELINES);
     detector->setProximityRatio(0.1);
+    detector->setKeepStrongSegments(false);
     return detector;
 }
 

@@ -6,8 +6,9 @@
 //  --dataset=yorkurban: structural AP / AR / F against YorkUrban-LineSegment ground truth,
 //    segments per image, long-segment share and median time per image (the paper's Table 2);
 //  --dataset=sequence: mean and standard deviation over frames of segments per frame,
-//    long-segment share and time per frame (the paper's Table 1), and LBD matching between
-//    consecutive frames checked against the epipolar geometry of the poses (doc/matching.md);
+//    long-segment share and time per frame (the paper's Table 1), LBD matching between
+//    consecutive frames checked against the epipolar geometry of the poses (doc/matching.md),
+//    and the tracks these matches chain into;
 //  --dataset=homography: LBD matching between image pairs related by a known homography:
 //    matches, correct matches, precision, repeatability and localisation error (doc/matching.md).
 // Prints Markdown tables on stdout, optionally writes CSV and SVG bar charts of time, F and
@@ -290,30 +291,33 @@ Table benchmarkYorkUrban(const std::vector<LineMethod>& methods, const std::vect
     return table;
 }
 
-// Whether and how the sequence benchmark matches consecutive frames.
+// Whether and how the benchmarks match lines.
 struct LineMatchOptions
 {
     bool enabled = false;
-    int top = 0;  //!< when > 0, each method matches only its `top` longest segments
+    int top = 0;  //!< when > 0, each method matches only its `top` lines of highest response
+    std::string rank = "own";  //!< the response that ranks them: own, length or contrast
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     LineMatchParams params;
 #endif
 };
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-// The `top` longest segments (all when top <= 0), longest first: a front end's line budget.
-std::vector<Vec4f> longestSegments(std::vector<Vec4f> lines, int top)
+// A front end's line budget: the method's `top` lines of highest response (all when top <= 0).
+// "own" is the KeyLine response the method's own detector gives: LSDAdvance's
+// computeLineResponses, LSDDetector's length for the others; "length" and "contrast" rank every
+// method alike, by the one or the other.
+std::vector<Vec4f> budgetLines(const LineMethod& method, const Mat& gray, const std::vector<Vec4f>& lines,
+                               const LineMatchOptions& matching)
 {
-    if (top <= 0 || (size_t)top >= lines.size())
+    if (matching.top <= 0)
         return lines;
-    std::vector<std::pair<float, int> > order;
-    for (size_t i = 0; i < lines.size(); i++)
-        order.push_back(std::make_pair(-(float)std::hypot(lines[i][2] - lines[i][0], lines[i][3] - lines[i][1]), (int)i));
-    std::stable_sort(order.begin(), order.end());
-    std::vector<Vec4f> kept;
-    for (int i = 0; i < top; i++)
-        kept.push_back(lines[order[i].second]);
-    return kept;
+    std::vector<float> responses;
+    if (matching.rank == "contrast" || (matching.rank == "own" && method.lsdAdvance))
+        computeLineResponses(gray, lines, responses);
+    else
+        responses = lengthResponses(lines, gray.size());
+    return bestLines(lines, responses, matching.top);
 }
 
 // Matches of one method accumulated over image pairs.
@@ -362,8 +366,11 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
         if (withPoses)
             for (const char* h : { "consistent / pair", "undecidable / pair", "precision (consistent / decidable)" })
                 table.header.push_back(h);
+        for (const char* h : { "tracks / frame", "track length (frames, mean)", "tracks >= 5 frames" })
+            table.header.push_back(h);
     }
     std::vector<MatchTotals> totals(methods.size());
+    std::vector<LineTracks> tracks(methods.size());
     std::vector<DescribedLines> previous(methods.size());
 #else
     CV_UNUSED(matching);
@@ -384,10 +391,11 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
             if (!matching.enabled)
                 continue;
-            DescribedLines current = describeLines(gray, longestSegments(lines, matching.top));
+            DescribedLines current = describeLines(gray, budgetLines(methods[m], gray, lines, matching));
+            std::vector<DMatch> matches;
             if (k > 0)
             {
-                const std::vector<DMatch> matches = matchLines(previous[m], current, matching.params);
+                matches = matchLines(previous[m], current, matching.params);
                 if (withPoses)
                 {
                     const Mat F = fundamentalFromPoses(sequence.P0, sequence.poses[k - 1], sequence.poses[k]);
@@ -399,6 +407,7 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
                     totals[m].matches += (double)matches.size();
                 }
             }
+            tracks[m].addFrame(current.lines.size(), matches);
             previous[m] = current;
 #endif
         }
@@ -422,6 +431,9 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
             for (const std::string& cell : { format("%.1f", t.perPair(t.correct)), format("%.1f", t.perPair(t.undecidable)),
                                              format("%.3f", t.precision()) })
                 table.rows.back().push_back(cell);
+        for (const std::string& cell : { format("%.1f", tracks[m].perFrame()), format("%.2f", tracks[m].meanLength()),
+                                         format("%d", tracks[m].atLeast(5)) })
+            table.rows.back().push_back(cell);
 #endif
     }
     return table;
@@ -448,8 +460,8 @@ Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vec
             std::vector<Vec4f> lines1, lines2;
             ms[m].push_back(timedDetect(methods[m], gray1, repeats, lines1, true));
             ms[m].push_back(timedDetect(methods[m], gray2, repeats, lines2, true));
-            lines1 = longestSegments(lines1, matching.top);
-            lines2 = longestSegments(lines2, matching.top);
+            lines1 = budgetLines(methods[m], gray1, lines1, matching);
+            lines2 = budgetLines(methods[m], gray2, lines2, matching);
             segments[m] += (double)(lines1.size() + lines2.size());
             const std::vector<DMatch> matches =
                 matchLines(describeLines(gray1, lines1), describeLines(gray2, lines2), matching.params);
@@ -486,7 +498,10 @@ int main(int argc, char** argv)
         "{homography |          | homography without --data: 3x3 matrix file from image1 to image2 (text, or OpenCV XML) }"
         "{max-hamming | 30      | LBD matching: largest Hamming distance of a kept mutual nearest neighbour }"
         "{no-match |            | sequence: skip the LBD matching columns }"
-        "{top      | 0          | LBD matching: each method matches only its N longest segments per image (0: all) }"
+        "{top      | 0          | LBD matching: each method matches only its N lines of highest response per image (0: all) }"
+        "{rank     | own        | the response --top ranks by: own (each method's KeyLine response: LSDAdvance's "
+                                  "computeLineResponses, the length for the others), length, or contrast "
+                                  "(computeLineResponses for every method) }"
         "{methods  | lsd,fld,fld_merge,edlines,plvins,lsdadvance | comma-separated methods }"
         "{params   |            | YAML/XML of LSDAdvance parameters (write() or save()) for the lsdadvance method }"
         "{subset   | all        | yorkurban images to use: all, even or odd (by index in list.txt) }"
@@ -516,11 +531,17 @@ int main(int argc, char** argv)
     matching.enabled = !parser.has("no-match");
     matching.params.maxHamming = parser.get<int>("max-hamming");
     matching.top = parser.get<int>("top");
+    matching.rank = parser.get<std::string>("rank");
 #endif
     setNumThreads(parser.get<int>("threads"));
     if (!parser.check())
     {
         parser.printErrors();
+        return 1;
+    }
+    if (matching.rank != "own" && matching.rank != "length" && matching.rank != "contrast")
+    {
+        std::cerr << "Error: --rank must be own, length or contrast, got '" << matching.rank << "'" << std::endl;
         return 1;
     }
 

@@ -28,10 +28,13 @@ float clampedCoordinate(float v, int side)
 void LSDAdvance::detect(InputArray image, std::vector<KeyLine>& keylines)
 {
     CV_INSTRUMENT_REGION();
-    const Size imageSize = image.size();
     std::vector<Vec4f> lines;
     detect(image, lines);
-    linesToKeyLines(lines, imageSize, keylines);
+    linesToKeyLines(lines, image.size(), keylines);
+    std::vector<float> responses;
+    lsda::lineResponses(lsda::toGray8U(image), lines, responses);
+    for (size_t i = 0; i < keylines.size(); i++)
+        keylines[i].response = responses[i];
 }
 
 void linesToKeyLines(InputArray linesIn, Size imageSize, std::vector<KeyLine>& keylines)

@@ -59,24 +59,17 @@ double countTrackingAlpha(int provisional, int keptPrevious, int keptBeforePrevi
 
 int countAtLeast(const std::vector<Vec4f>& segments, double minLength)
 {
-    int count = 0;
-    for (const Vec4f& s : segments)
-        count += segmentLength(s) >= minLength;
-    return count;
+    return countLongOrStrong(segments, std::vector<float>(), minLength, 0.0);
 }
 
-double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, LengthThreshold rule)
+namespace {
+
+// The rule on values given by their sum, sum of squares and count (mean, population standard
+// deviation), times alpha; 0 for no values.
+double thresholdOf(double sum, double sumSq, double n, double alpha, LengthThreshold rule)
 {
-    if (segments.empty())
+    if (n <= 0)
         return 0.0;
-    double sum = 0.0, sumSq = 0.0;
-    for (const Vec4f& s : segments)
-    {
-        const double len = segmentLength(s);
-        sum += len;
-        sumSq += len * len;
-    }
-    const double n = (double)segments.size();
     const double mean = sum / n;
     if (mean <= 0.0)
         return 0.0;
@@ -86,14 +79,67 @@ double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, Lengt
     return std::max((1.0 - std::abs(mean - stddev) / mean) * mean * alpha, 0.0);
 }
 
+bool longOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses, size_t i,
+                  double minLength, double minResponse)
+{
+    return segmentLength(segments[i]) >= minLength || (!responses.empty() && responses[i] >= minResponse);
+}
+
+void checkResponses(const std::vector<Vec4f>& segments, const std::vector<float>& responses)
+{
+    CV_Assert(responses.empty() || responses.size() == segments.size());
+}
+
+} // namespace
+
+double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, LengthThreshold rule)
+{
+    double sum = 0.0, sumSq = 0.0;
+    for (const Vec4f& s : segments)
+    {
+        const double len = segmentLength(s);
+        sum += len;
+        sumSq += len * len;
+    }
+    return thresholdOf(sum, sumSq, (double)segments.size(), alpha, rule);
+}
+
+double adaptiveMinResponse(const std::vector<float>& responses, double alpha, LengthThreshold rule)
+{
+    double sum = 0.0, sumSq = 0.0;
+    for (float r : responses)
+    {
+        sum += r;
+        sumSq += (double)r * r;
+    }
+    return thresholdOf(sum, sumSq, (double)responses.size(), alpha, rule);
+}
+
 void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
                        std::vector<Vec4f>& kept)
 {
+    keepLongOrStrong(segments, std::vector<float>(), minLength, 0.0, kept);
+}
+
+void keepLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
+                      double minLength, double minResponse, std::vector<Vec4f>& kept)
+{
+    checkResponses(segments, responses);
     kept.clear();
     kept.reserve(segments.size());
-    for (const Vec4f& s : segments)
-        if (segmentLength(s) >= minLength)
-            kept.push_back(s);
+    for (size_t i = 0; i < segments.size(); i++)
+        if (longOrStrong(segments, responses, i, minLength, minResponse))
+            kept.push_back(segments[i]);
+}
+
+int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
+                      double minLength, double minResponse)
+{
+    checkResponses(segments, responses);
+    int count = 0;
+    for (size_t i = 0; i < segments.size(); i++)
+        count += longOrStrong(segments, responses, i, minLength, minResponse);
+    return count;
 }
 
 }}} // namespace cv::ximgproc::lsda

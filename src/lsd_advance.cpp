@@ -109,7 +109,7 @@ public:
             baseSegments->detect(gray, frame.incoming);
         else
             frame.incoming.clear();
-        runStages(elapsedMs(start), lines);
+        runStages(elapsedMs(start), &gray, lines);
     }
 
     void processSegments(InputArray segments, OutputArray lines) CV_OVERRIDE
@@ -120,7 +120,7 @@ public:
             CV_Error_(Error::StsOutOfRange,
                       ("LSDAdvance::processSegments: segment coordinates must be finite and within "
                        "[-%g, %g) px", kMaxCoordinate, kMaxCoordinate));
-        runStages(0.0, lines);
+        runStages(0.0, nullptr, lines);
     }
 
     void reset() CV_OVERRIDE
@@ -264,6 +264,8 @@ public:
     int getLengthThreshold() const CV_OVERRIDE { return (int)lengthThreshold; }
     void setLengthThresholdScale(double v) CV_OVERRIDE { assign(lengthThresholdScale, v, kLengthThresholdScale); reset(); }
     double getLengthThresholdScale() const CV_OVERRIDE { return lengthThresholdScale; }
+    void setKeepStrongSegments(bool v) CV_OVERRIDE { keepStrongSegments = v; reset(); }
+    bool getKeepStrongSegments() const CV_OVERRIDE { return keepStrongSegments; }
 
     void setMergeStrategy(int v) CV_OVERRIDE
     {
@@ -389,8 +391,10 @@ private:
     };
 
     // Stages 1-3 in the configured order on the segments in frame.incoming, which become the
-    // frame's base segments; fills lastStats and the stage outputs of getLastStageOutputs.
-    void runStages(double baseMs, OutputArray lines)
+    // frame's base segments; fills lastStats and the stage outputs of getLastStageOutputs. gray is
+    // the image they come from, nullptr when there is none (processSegments): stage 1 then has no
+    // responses and keeps long segments only.
+    void runStages(double baseMs, const Mat* gray, OutputArray lines)
     {
         // Only a call that got this far replaces the previous call's stage outputs.
         frame.base.swap(frame.incoming);
@@ -402,20 +406,37 @@ private:
         // The threshold always comes from the base segments: after merging, the lengths are
         // no longer those of one detector's output. Every rule is proportional to alpha.
         const int64 t = getTickCount();
-        const double unitMinLength = lengthFilterMode == LENGTH_FILTER_NONE
-                                         ? 0.0
-                                         : lengthThresholdScale * lsda::adaptiveMinLength(base, 1.0, lengthThreshold);
+        const bool filtering = lengthFilterMode != LENGTH_FILTER_NONE;
+        const double unitMinLength =
+            filtering ? lengthThresholdScale * lsda::adaptiveMinLength(base, 1.0, lengthThreshold) : 0.0;
+        // The responses of the base segments give the threshold of the strong ones, as their
+        // lengths give the length threshold.
+        const Mat* strongFrom = filtering && keepStrongSegments ? gray : nullptr;
+        frame.baseResponses.clear();
+        if (strongFrom)
+            lsda::lineResponses(*strongFrom, base, frame.baseResponses);
+        const double unitMinResponse =
+            strongFrom ? lengthThresholdScale * lsda::adaptiveMinResponse(frame.baseResponses, 1.0, lengthThreshold) : 0.0;
         stats.filterMs = elapsedMs(t);
 
         if (stageOrder == FILTER_THEN_MERGE)
         {
-            frame.filtered = &filterStage(base, unitMinLength, stats, frame.work);
+            frame.filtered = &filterStage(base, frame.baseResponses, unitMinLength, unitMinResponse, stats, frame.work);
             frame.merged = &mergeStage(*frame.filtered, stats, frame.out);
         }
         else
         {
             frame.merged = &mergeStage(base, stats, frame.work);
-            frame.filtered = &filterStage(*frame.merged, unitMinLength, stats, frame.out);
+            // Fused segments have responses of their own; unmerged input keeps the base's.
+            const std::vector<float>* responses = &frame.baseResponses;
+            if (strongFrom && frame.merged != &base)
+            {
+                const int64 tr = getTickCount();
+                lsda::lineResponses(*strongFrom, *frame.merged, frame.mergedResponses);
+                responses = &frame.mergedResponses;
+                stats.filterMs += elapsedMs(tr);
+            }
+            frame.filtered = &filterStage(*frame.merged, *responses, unitMinLength, unitMinResponse, stats, frame.out);
         }
         const std::vector<Vec4f>& out = stageOrder == FILTER_THEN_MERGE ? *frame.merged : *frame.filtered;
         stats.outputSegments = (int)out.size();
@@ -428,7 +449,8 @@ private:
     }
 
     // alpha of this frame; the kept counts of the two previous frames are keptCounts.
-    double frameAlpha(const std::vector<Vec4f>& in, double unitMinLength) const
+    double frameAlpha(const std::vector<Vec4f>& in, const std::vector<float>& responses, double unitMinLength,
+                      double unitMinResponse) const
     {
         if (framesSeen < 2)
             return 1.0;
@@ -439,23 +461,27 @@ private:
         case LENGTH_FILTER_INTERFRAME_CONTINUOUS:
             return lsda::continuousInterFrameAlpha(keptCounts[0], keptCounts[1]);
         case LENGTH_FILTER_COUNT_TRACKING:
-            return lsda::countTrackingAlpha(lsda::countAtLeast(in, unitMinLength), keptCounts[0], keptCounts[1]);
+            return lsda::countTrackingAlpha(lsda::countLongOrStrong(in, responses, unitMinLength, unitMinResponse),
+                                            keptCounts[0], keptCounts[1]);
         default:
             return 1.0;
         }
     }
 
-    // Returns the stage's output: kept, or in itself when the filter is off (no copy).
-    const std::vector<Vec4f>& filterStage(const std::vector<Vec4f>& in, double unitMinLength,
-                                          LSDAdvanceStats& stats, std::vector<Vec4f>& kept) const
+    // Returns the stage's output: kept, or in itself when the filter is off (no copy). responses
+    // are those of in, or empty when short segments are never kept for their response.
+    const std::vector<Vec4f>& filterStage(const std::vector<Vec4f>& in, const std::vector<float>& responses,
+                                          double unitMinLength, double unitMinResponse, LSDAdvanceStats& stats,
+                                          std::vector<Vec4f>& kept) const
     {
         const int64 t = getTickCount();
         const std::vector<Vec4f>* out = &in;
         if (lengthFilterMode != LENGTH_FILTER_NONE)
         {
-            stats.alpha = frameAlpha(in, unitMinLength);
+            stats.alpha = frameAlpha(in, responses, unitMinLength, unitMinResponse);
             stats.minLength = stats.alpha * unitMinLength;
-            lsda::dropShortSegments(in, stats.minLength, kept);
+            stats.minResponse = responses.empty() ? 0.0 : stats.alpha * unitMinResponse;
+            lsda::keepLongOrStrong(in, responses, stats.minLength, stats.minResponse, kept);
             out = &kept;
         }
         stats.filteredSegments = (int)out->size();
@@ -544,6 +570,7 @@ private:
         static const std::vector<BoolParam> params = {
             { "fldDoMerge", &LSDAdvanceImpl::getFldDoMerge, &LSDAdvanceImpl::setFldDoMerge },
             { "edNfaValidation", &LSDAdvanceImpl::getEdNfaValidation, &LSDAdvanceImpl::setEdNfaValidation },
+            { "keepStrongSegments", &LSDAdvanceImpl::getKeepStrongSegments, &LSDAdvanceImpl::setKeepStrongSegments },
         };
         return params;
     }
@@ -559,6 +586,7 @@ private:
     int stageOrder = MERGE_THEN_FILTER;
     lsda::LengthThreshold lengthThreshold = lsda::LengthThreshold::CAPPED;
     double lengthThresholdScale = 1.0;
+    bool keepStrongSegments = true;
     lsda::GroupingParams grouping;
     lsda::MergeParams merging;
 
@@ -573,6 +601,7 @@ private:
     {
         std::vector<Vec4f> incoming;  // segments of the current call until its stages run
         std::vector<Vec4f> base, work, out;
+        std::vector<float> baseResponses, mergedResponses;  // stage 1's responses (empty when unused)
         const std::vector<Vec4f>* filtered = nullptr;  // stage 1's output (nullptr before the first call)
         const std::vector<Vec4f>* merged = nullptr;    // stage 3's output
         bool grouped = false;                          // groups partition stage 2's input

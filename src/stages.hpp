@@ -119,9 +119,34 @@ enum class LengthThreshold
 CV_EXPORTS double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha,
                                     LengthThreshold rule = LengthThreshold::PAPER);
 
+//! The same rule on responses (lineResponses): the threshold of stage 1's strong segments.
+CV_EXPORTS double adaptiveMinResponse(const std::vector<float>& responses, double alpha,
+                                      LengthThreshold rule);
+
 //! Copies the segments not shorter than minLength, in their order.
 CV_EXPORTS void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
                                   std::vector<Vec4f>& kept);
+
+//! Copies, in their order, the segments at least minLength long or, when responses (one per
+//! segment) are given, with a response of at least minResponse: long or strong.
+CV_EXPORTS void keepLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
+                                 double minLength, double minResponse, std::vector<Vec4f>& kept);
+
+//! Number of segments keepLongOrStrong keeps.
+CV_EXPORTS int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
+                                 double minLength, double minResponse);
+
+//--- segment responses (line_response.cpp)
+
+//! Mean gray-level step across the segment, its left (brighter) side minus its right side, 1 px
+//! either side of its centre line, sampled at the centre of each unit step (bilinear, coordinates
+//! clamped into the image); negative steps count 0. Gray levels, in [0, 255].
+CV_EXPORTS double meanContrast(const Mat& gray, const Vec4f& segment);
+
+//! Response of each segment: length / max(width, height) * (meanContrast / 255)^2, times 0.1 when
+//! an endpoint lies within 2 px of the image's edge or beyond it (the frame cuts the segment).
+CV_EXPORTS void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments,
+                              std::vector<float>& responses);
 
 //--- stage 2: angle + endpoint grouping (segment_grouping.cpp)
 

@@ -72,10 +72,16 @@ TEST(LSDAdvance_KeyLines, detect_overload_returns_the_segments_of_detect_as_keyl
     ASSERT_FALSE(segments.empty());
     ASSERT_EQ(segments.size(), keylines.size());
 
+    // linesToKeyLines' fields, with computeLineResponses' response.
     std::vector<KeyLine> expected;
     linesToKeyLines(segments, gray.size(), expected);
+    std::vector<float> responses;
+    computeLineResponses(gray, segments, responses);
     for (size_t i = 0; i < keylines.size(); i++)
+    {
+        expected[i].response = responses[i];
         expectSameKeyLine(expected[i], keylines[i], i);
+    }
     // A colour image gives the same KeyLines as its gray version.
     Mat colour;
     cvtColor(gray, colour, COLOR_GRAY2BGR);
@@ -83,6 +89,8 @@ TEST(LSDAdvance_KeyLines, detect_overload_returns_the_segments_of_detect_as_keyl
     detector->reset();
     detector->detect(colour, fromColour);
     ASSERT_EQ(keylines.size(), fromColour.size());
+    for (size_t i = 0; i < keylines.size(); i++)
+        EXPECT_EQ(keylines[i].response, fromColour[i].response);
 }
 
 TEST(LSDAdvance_KeyLines, response_ranks_by_length_and_endpoints_are_clamped_into_the_image)

@@ -164,6 +164,34 @@ TEST(LSDAdvance_InterFrameAlpha, count_tracking_opposes_the_frame_own_deviation)
     EXPECT_EQ(1.0, lsda::countTrackingAlpha(50, 0, 0));
 }
 
+TEST(LSDAdvance_LengthFilter, keeps_long_or_strong_segments_in_order_and_the_response_threshold_follows_the_rule)
+{
+    const std::vector<Vec4f> segments = segmentsOfLengths({ 5, 30, 8, 12, 50 });
+    const std::vector<float> responses = { 0.5f, 0.0625f, 0.125f, 0.25f, 0.0f };
+    std::vector<Vec4f> kept;
+    lsda::keepLongOrStrong(segments, responses, 20.0, 0.25, kept);
+    // 5 px strong, 30 px long, 12 px strong (at the threshold), 50 px long; 8 px neither.
+    const std::vector<Vec4f> expected = { segments[0], segments[1], segments[3], segments[4] };
+    EXPECT_EQ(expected, kept);
+    EXPECT_EQ(4, lsda::countLongOrStrong(segments, responses, 20.0, 0.25));
+    // Without responses it is the length filter.
+    lsda::keepLongOrStrong(segments, std::vector<float>(), 20.0, 0.01, kept);
+    std::vector<Vec4f> longOnes;
+    lsda::dropShortSegments(segments, 20.0, longOnes);
+    EXPECT_EQ(longOnes, kept);
+    EXPECT_EQ(2, lsda::countLongOrStrong(segments, std::vector<float>(), 20.0, 0.01));
+    EXPECT_THROW(lsda::keepLongOrStrong(segments, std::vector<float>(2, 1.f), 20.0, 0.01, kept), cv::Exception);
+
+    // The thresholds of both rules, on responses as on lengths.
+    const std::vector<double> values = { 0.5, 0.0625, 0.125, 0.25, 0.0 };
+    double mean, stddev;
+    meanAndStd(values, mean, stddev);
+    EXPECT_NEAR(0.9 * std::min(mean, stddev), lsda::adaptiveMinResponse(responses, 0.9, lsda::LengthThreshold::CAPPED), 1e-8);
+    EXPECT_NEAR(std::max(0.0, (1 - std::abs(mean - stddev) / mean) * mean),
+                lsda::adaptiveMinResponse(responses, 1.0, lsda::LengthThreshold::PAPER), 1e-8);
+    EXPECT_EQ(0.0, lsda::adaptiveMinResponse(std::vector<float>(), 1.0, lsda::LengthThreshold::CAPPED));
+}
+
 TEST(LSDAdvance_LengthFilter, countAtLeast_counts_segments_not_shorter_than_the_length)
 {
     EXPECT_EQ(3, lsda::countAtLeast(segmentsOfLengths({ 5, 12, 12.5, 40 }), 12.0));

@@ -4,7 +4,9 @@
 
 // Correctness criteria of line matches (doc/matching.md): homography correspondence,
 // repeatability and localisation error, epipolar consistency, the ground-truth loaders, and
-// LSDAdvance's LBD matching precision against LSD's on real pairs.
+// LSDAdvance's LBD matching against LSD's on real pairs: precision with every line, and correct
+// matches, precision and tracks at an equal line budget (each method's N lines of highest
+// KeyLine response).
 
 #include "test_precomp.hpp"
 #include "opencv2/lsd_advance/evaluation.hpp"
@@ -232,17 +234,24 @@ Detect lsdAdvanceDetect()
     return [detector](const Mat& g, std::vector<Vec4f>& l) { detector->reset(); detector->detect(g, l); };
 }
 
-TEST(LSDAdvance_Matching, homography_pairs_precision_at_least_LSDs)
+// The five HPatches graffiti pairs and graf1/graf3 of opencv-doc.
+std::vector<HomographyPair> homographyPairs()
 {
-    // graf1/graf3 (opencv-doc) with the five HPatches graffiti pairs, pooled: one pair has only
-    // ~50 matches for LSDAdvance, whose precision then varies by +-0.07 between close viewpoints.
     std::vector<HomographyPair> pairs = loadHomographyPairs(dataFolder("hpatches_v_graffiti"));
-    ASSERT_EQ(5u, pairs.size());
     HomographyPair graf;
     graf.image1Path = samples::findFile("graf1.png");
     graf.image2Path = samples::findFile("graf3.png");
     graf.H = readHomography(samples::findFile("H1to3p.xml"));
     pairs.push_back(graf);
+    return pairs;
+}
+
+TEST(LSDAdvance_Matching, homography_pairs_precision_at_least_LSDs)
+{
+    // graf1/graf3 (opencv-doc) with the five HPatches graffiti pairs, pooled: one pair has only
+    // ~50 matches for LSDAdvance, whose precision then varies by +-0.07 between close viewpoints.
+    const std::vector<HomographyPair> pairs = homographyPairs();
+    ASSERT_EQ(6u, pairs.size());
 
     MatchCounts lsd, ours;
     const Detect detectLsd = lsdDetect(), detectOurs = lsdAdvanceDetect();
@@ -292,6 +301,117 @@ TEST(LSDAdvance_Matching, kitti_frame_pairs_epipolar_precision_at_least_LSDs)
               << ", LSDAdvance " << ours.correct << "/" << ours.matches << " = " << ours.precision() << std::endl;
     EXPECT_GT(ours.correct, 100);
     EXPECT_GE(ours.precision(), lsd.precision());
+}
+
+using cv::line_descriptor::KeyLine;
+
+// What a front end keeps of one image: the `budget` KeyLines of highest response, described.
+DescribedLines budgetOf(const Mat& gray, const std::vector<KeyLine>& keylines, int budget)
+{
+    std::vector<Vec4f> lines;
+    keyLinesToLines(keylines, lines);
+    std::vector<float> responses;
+    for (const KeyLine& kl : keylines)
+        responses.push_back(kl.response);
+    return describeLines(gray, bestLines(lines, responses, budget));
+}
+
+// LSD's lines as KeyLines with LSDDetector's response, the length (LSDAdvance::detect(image,
+// keylines) sets computeLineResponses' instead).
+void lsdKeyLines(const Ptr<LineSegmentDetector>& lsd, const Mat& gray, std::vector<KeyLine>& keylines)
+{
+    std::vector<Vec4f> lines;
+    lsd->detect(gray, lines);
+    linesToKeyLines(lines, gray.size(), keylines);
+}
+
+const int kBudgets[] = { 100, 200, 400 };
+
+TEST(LSDAdvance_Matching, equal_budget_homography_pairs_more_correct_matches_and_precision_3_points_above_LSDs)
+{
+    const std::vector<HomographyPair> pairs = homographyPairs();
+    ASSERT_EQ(6u, pairs.size());
+
+    Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
+    Ptr<LSDAdvance> ours = createLSDAdvance();
+    MatchCounts counts[3][2];  // [budget][LSD, LSDAdvance], pooled over the pairs
+    for (const HomographyPair& p : pairs)
+    {
+        const Mat gray[2] = { imread(p.image1Path, IMREAD_GRAYSCALE), imread(p.image2Path, IMREAD_GRAYSCALE) };
+        ASSERT_FALSE(gray[0].empty() || gray[1].empty());
+        std::vector<KeyLine> keylines[2][2];  // [method][image]
+        for (int i = 0; i < 2; i++)
+        {
+            lsdKeyLines(lsd, gray[i], keylines[0][i]);
+            ours->reset();  // two views, not a sequence
+            ours->detect(gray[i], keylines[1][i]);
+        }
+        for (int b = 0; b < 3; b++)
+            for (int m = 0; m < 2; m++)
+            {
+                const DescribedLines l1 = budgetOf(gray[0], keylines[m][0], kBudgets[b]);
+                const DescribedLines l2 = budgetOf(gray[1], keylines[m][1], kBudgets[b]);
+                const HomographyMatchScore s = evaluateHomographyMatches(
+                    l1.lines, l2.lines, matchLines(l1, l2, LineMatchParams()), p.H, gray[0].size(), gray[1].size());
+                counts[b][m].matches += s.matches;
+                counts[b][m].correct += s.correct;
+            }
+    }
+    for (int b = 0; b < 3; b++)
+    {
+        const MatchCounts &lsdCounts = counts[b][0], &ourCounts = counts[b][1];
+        std::cout << "homography pairs, " << kBudgets[b] << " lines per image: LSD " << lsdCounts.correct << "/"
+                  << lsdCounts.matches << " = " << lsdCounts.precision() << ", LSDAdvance " << ourCounts.correct << "/"
+                  << ourCounts.matches << " = " << ourCounts.precision() << std::endl;
+        EXPECT_GE(ourCounts.correct, lsdCounts.correct) << kBudgets[b] << " lines";
+        EXPECT_GE(ourCounts.precision(), lsdCounts.precision() + 0.03) << kBudgets[b] << " lines";
+    }
+}
+
+TEST(LSDAdvance_Matching, equal_budget_kitti_more_consistent_matches_and_tracks_than_LSDs)
+{
+    const SequenceData sequence = loadSequence(dataFolder("kitti_seq1"));
+    ASSERT_FALSE(sequence.poses.empty());
+    Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
+    Ptr<LSDAdvance> ours = createLSDAdvance();  // the frames are a sequence
+    MatchCounts counts[3][2];                   // [budget][LSD, LSDAdvance], consistent among decided
+    LineTracks tracks[3][2];
+    DescribedLines previous[3][2];
+    for (size_t k = 0; k < sequence.imagePaths.size(); k++)
+    {
+        const Mat gray = imread(sequence.imagePaths[k], IMREAD_GRAYSCALE);
+        ASSERT_FALSE(gray.empty());
+        std::vector<KeyLine> keylines[2];
+        lsdKeyLines(lsd, gray, keylines[0]);
+        ours->detect(gray, keylines[1]);
+        const Mat F = k > 0 ? fundamentalFromPoses(sequence.P0, sequence.poses[k - 1], sequence.poses[k]) : Mat();
+        for (int b = 0; b < 3; b++)
+            for (int m = 0; m < 2; m++)
+            {
+                DescribedLines current = budgetOf(gray, keylines[m], kBudgets[b]);
+                std::vector<DMatch> matches;
+                if (k > 0)
+                {
+                    matches = matchLines(previous[b][m], current, LineMatchParams());
+                    const EpipolarMatchScore s = evaluateEpipolarMatches(previous[b][m].lines, current.lines, matches, F);
+                    counts[b][m].matches += s.consistent + s.inconsistent;
+                    counts[b][m].correct += s.consistent;
+                }
+                tracks[b][m].addFrame(current.lines.size(), matches);
+                previous[b][m] = current;
+            }
+    }
+    for (int b = 0; b < 3; b++)
+    {
+        const MatchCounts &lsdCounts = counts[b][0], &ourCounts = counts[b][1];
+        std::cout << "kitti, " << kBudgets[b] << " lines per frame: consistent LSD " << lsdCounts.correct << "/"
+                  << lsdCounts.matches << " = " << lsdCounts.precision() << ", LSDAdvance " << ourCounts.correct << "/"
+                  << ourCounts.matches << " = " << ourCounts.precision() << "; tracks of >= 5 frames LSD "
+                  << tracks[b][0].atLeast(5) << ", LSDAdvance " << tracks[b][1].atLeast(5) << std::endl;
+        EXPECT_GE(ourCounts.correct, lsdCounts.correct) << kBudgets[b] << " lines";
+        EXPECT_GE(ourCounts.precision(), lsdCounts.precision()) << kBudgets[b] << " lines";
+        EXPECT_GE(tracks[b][1].atLeast(5), tracks[b][0].atLeast(5)) << kBudgets[b] << " lines";
+    }
 }
 #endif
 

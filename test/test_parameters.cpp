@@ -106,6 +106,7 @@ std::vector<BoolParameter> boolParameters()
     return {
         { "fldDoMerge", &LSDAdvance::setFldDoMerge, &LSDAdvance::getFldDoMerge, false },
         { "edNfaValidation", &LSDAdvance::setEdNfaValidation, &LSDAdvance::getEdNfaValidation, true },
+        { "keepStrongSegments", &LSDAdvance::setKeepStrongSegments, &LSDAdvance::getKeepStrongSegments, true },
     };
 }
 

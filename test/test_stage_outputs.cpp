@@ -70,7 +70,8 @@ const std::vector<Vec4f>& stage1Input(const LSDAdvance& d, const StageOutputs& o
 
 // Runs a short sequence (so that inter-frame alpha acts) and checks the last frame's outputs
 // with `check` after every frame.
-void forEachFrameOfBothOrders(const std::function<void(const LSDAdvance&, const std::vector<Vec4f>&)>& check)
+void forEachFrameOfBothOrders(
+    const std::function<void(const LSDAdvance&, const Mat& frame, const std::vector<Vec4f>& lines)>& check)
 {
     const Mat& img = buildingImage();
     ASSERT_FALSE(img.empty());
@@ -84,7 +85,7 @@ void forEachFrameOfBothOrders(const std::function<void(const LSDAdvance&, const 
         {
             std::vector<Vec4f> lines;
             detector->detect(frame, lines);
-            check(*detector, lines);
+            check(*detector, frame, lines);
         }
     }
 }
@@ -105,22 +106,30 @@ TEST(LSDAdvance_StageOutputs, base_segments_are_what_the_base_LSD_alone_returns)
     EXPECT_TRUE(bitIdentical(lsdAlone, o.base));
 }
 
-TEST(LSDAdvance_StageOutputs, filtered_segments_are_the_length_filter_with_the_reported_minLength)
+TEST(LSDAdvance_StageOutputs, filtered_segments_are_the_long_or_strong_ones_with_the_reported_thresholds)
 {
-    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>&) {
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat& frame, const std::vector<Vec4f>&) {
         const StageOutputs o = stageOutputsOf(d);
         const LSDAdvanceStats stats = d.getLastStats();
         ASSERT_GT(stats.minLength, 0.0);
-        std::vector<Vec4f> expected;
-        lsda::dropShortSegments(stage1Input(d, o), stats.minLength, expected);
-        EXPECT_LT(expected.size(), stage1Input(d, o).size());  // the filter dropped something
+        const std::vector<Vec4f>& input = stage1Input(d, o);
+        std::vector<float> baseResponses, responses;
+        lsda::lineResponses(frame, o.base, baseResponses);
+        lsda::lineResponses(frame, input, responses);
+        EXPECT_NEAR(stats.alpha * lsda::adaptiveMinResponse(baseResponses, 1.0, lsda::LengthThreshold::CAPPED),
+                    stats.minResponse, 1e-6 * stats.minResponse);
+        std::vector<Vec4f> expected, longOnes;
+        lsda::keepLongOrStrong(input, responses, stats.minLength, stats.minResponse, expected);
+        lsda::dropShortSegments(input, stats.minLength, longOnes);
+        EXPECT_LT(expected.size(), input.size());     // the filter dropped something
+        EXPECT_GT(expected.size(), longOnes.size());  // and kept short strong segments
         EXPECT_TRUE(bitIdentical(expected, o.filtered));
     });
 }
 
 TEST(LSDAdvance_StageOutputs, group_labels_partition_the_stage2_input_as_groupSegments_does)
 {
-    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>&) {
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat&, const std::vector<Vec4f>&) {
         const StageOutputs o = stageOutputsOf(d);
         const std::vector<Vec4f>& input = stage2Input(d, o);
         ASSERT_EQ(input.size(), o.labels.size());
@@ -155,7 +164,7 @@ TEST(LSDAdvance_StageOutputs, group_labels_partition_the_stage2_input_as_groupSe
 
 TEST(LSDAdvance_StageOutputs, merged_segments_are_mergeGroups_of_the_stage2_input)
 {
-    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>&) {
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat&, const std::vector<Vec4f>&) {
         const StageOutputs o = stageOutputsOf(d);
         const std::vector<Vec4f>& input = stage2Input(d, o);
         lsda::SegmentGroups groups;
@@ -169,7 +178,7 @@ TEST(LSDAdvance_StageOutputs, merged_segments_are_mergeGroups_of_the_stage2_inpu
 
 TEST(LSDAdvance_StageOutputs, the_last_stage_output_is_detect_lines)
 {
-    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>& lines) {
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat&, const std::vector<Vec4f>& lines) {
         const StageOutputs o = stageOutputsOf(d);
         EXPECT_TRUE(bitIdentical(lines, d.getStageOrder() == LSDAdvance::FILTER_THEN_MERGE ? o.merged : o.filtered));
     });
@@ -177,7 +186,7 @@ TEST(LSDAdvance_StageOutputs, the_last_stage_output_is_detect_lines)
 
 TEST(LSDAdvance_StageOutputs, counts_match_getLastStats)
 {
-    forEachFrameOfBothOrders([](const LSDAdvance& d, const std::vector<Vec4f>& lines) {
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat&, const std::vector<Vec4f>& lines) {
         const StageOutputs o = stageOutputsOf(d);
         const LSDAdvanceStats stats = d.getLastStats();
         EXPECT_EQ(stats.baseSegments, (int)o.base.size());

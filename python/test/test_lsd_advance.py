@@ -171,6 +171,8 @@ def test_detect_equals_the_cpp_sample_output(building, tmp_path):
 
 def test_detect_equals_processSegments_of_opencv_lsd(building):
     detector = api.createLSDAdvance()
+    # processSegments has no image, so no responses: stage 1 keeps long segments only.
+    detector.setKeepStrongSegments(False)
     lsd = cv2.createLineSegmentDetector(detector.getLsdRefine(), detector.getLsdScale(), detector.getLsdSigmaScale(),
                                         detector.getLsdQuant(), detector.getLsdAngleTolerance(), detector.getLsdLogEps(),
                                         detector.getLsdDensityThreshold(), detector.getLsdNumBins())
@@ -179,6 +181,24 @@ def test_detect_equals_processSegments_of_opencv_lsd(building):
     assert detector.getLastStats().baseSegments == len(base)
     detector.reset()
     assert np.array_equal(detector.processSegments(base), lines)
+
+
+def test_computeLineResponses_match_detectKeyLines_and_rank_contrast(building):
+    detector = api.createLSDAdvance()
+    lines = detector.detect(building)
+    responses = api.computeLineResponses(building, lines)
+    assert responses.shape == (len(lines), 1) and responses.dtype == np.float32
+    if hasattr(api, "linesToKeyLines"):
+        keylines = detector.detectKeyLines(building)
+        assert [k.response for k in keylines] == list(responses.ravel())
+    # A step of 150 gray levels under a 120 px segment pointing up (bright side on its left).
+    step = np.full((200, 300), 50, np.uint8)
+    step[:, :150] = 200
+    up = np.array([[[149.5, 160, 149.5, 40]]], np.float32)
+    assert api.computeLineResponses(step, up)[0, 0] == pytest.approx(120 / 300 * (150 / 255) ** 2, rel=1e-5)
+    assert api.computeLineResponses(step, up[:, :, [2, 3, 0, 1]])[0, 0] == 0
+    with pytest.raises(cv2.error):
+        api.computeLineResponses(np.zeros((0, 0), np.uint8), up)
 
 
 def test_gray_bgr_and_bgra_input_agree(building):

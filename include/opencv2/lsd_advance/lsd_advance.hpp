@@ -26,7 +26,7 @@ struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
 {
     LSDAdvanceStats()
         : baseSegments(0), mergedSegments(0), filteredSegments(0), mergeGroups(0), outputSegments(0),
-          minLength(0), alpha(1), baseMs(0), filterMs(0), groupingMs(0), mergingMs(0)
+          minLength(0), minResponse(0), alpha(1), baseMs(0), filterMs(0), groupingMs(0), mergingMs(0)
     {}
 
     CV_PROP_RW int baseSegments;     //!< segments returned by the base detector (stage 0)
@@ -35,6 +35,7 @@ struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
     CV_PROP_RW int mergeGroups;      //!< endpoint groups holding two or more segments (stage 2)
     CV_PROP_RW int outputSegments;   //!< segments returned
     CV_PROP_RW double minLength;     //!< length threshold of stage 1, in pixels (0 when the filter is off)
+    CV_PROP_RW double minResponse;   //!< response threshold of stage 1's strong segments (0 when none are kept for their response)
     CV_PROP_RW double alpha;         //!< inter-frame factor used by stage 1, in [0.8, 1.2] (1 when the filter is off)
     CV_PROP_RW double baseMs;        //!< time of stage 0, ms
     CV_PROP_RW double filterMs;      //!< time of stage 1, ms
@@ -55,7 +56,8 @@ three stages:
    standard deviation of the segment lengths of the frame, segments shorter than
    @f$L_{min} = \alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$ (the paper's rule; by default
    @f$\alpha \min(\mu, \sigma)@f$, see LengthThresholdRule; both times getLengthThresholdScale) are
-   dropped. @f$\alpha@f$ is 1 for a
+   dropped, unless they are strong (getKeepStrongSegments): their response (computeLineResponses)
+   reaches the same rule applied to the responses of the frame's segments. @f$\alpha@f$ is 1 for a
    single image; in a sequence it follows the change of the count of kept segments over the two
    previous frames (see LENGTH_FILTER_INTERFRAME).
 2. **Grouping**: segments are binned by undirected angle (getAngleBinWidth), and two segments
@@ -266,7 +268,8 @@ public:
     in the same order, filled by linesToKeyLines() exactly as
     cv::line_descriptor::LSDDetector fills octave 0, so that
     cv::line_descriptor::BinaryDescriptor::compute() and BinaryDescriptorMatcher take them
-    unchanged. `response` ranks them: sort by it, largest first, to keep the N longest lines.
+    unchanged, except `response`, which is computeLineResponses()'s: the length weighted by the
+    squared contrast of the line. Sort by it, largest first, to keep a front end's N best lines.
 
     The call is a frame of the sequence, like detect(InputArray, OutputArray). Present when
     OpenCV's line_descriptor module is (HAVE_OPENCV_LINE_DESCRIPTOR).
@@ -523,6 +526,18 @@ public:
     /** @brief Returns the factor applied to stage 1's threshold (setLengthThresholdScale()).
     @return Factor, in (0, 10]. */
     CV_WRAP virtual double getLengthThresholdScale() const = 0;
+    /** @brief Sets whether stage 1 also keeps short segments that are strong.
+    @param keep true (default): a segment shorter than the length threshold is kept when its
+    response (computeLineResponses) reaches the threshold the same rule (LengthThresholdRule,
+    alpha, getLengthThresholdScale) gives on the responses of the frame's base segments; false: the
+    paper's filter, by length alone. processSegments() has no image and so no responses: it
+    filters by length alone either way.
+    @note Not in the paper: short segments of high contrast are the ones a line matcher finds
+    again in the next view; the length filter alone dropped them (doc/matching.md). */
+    CV_WRAP virtual void setKeepStrongSegments(bool keep) = 0;
+    /** @brief Returns whether stage 1 keeps strong short segments (setKeepStrongSegments()).
+    @return true when it does. */
+    CV_WRAP virtual bool getKeepStrongSegments() const = 0;
 
     /** @brief Sets how stage 3 fuses the segments of a group.
     @param strategy One of LSDAdvance::MergeStrategy. Default MERGE_LONGEST_FIRST.
@@ -634,6 +649,31 @@ CV_EXPORTS_W Ptr<LSDAdvance> createLSDAdvance(int lengthFilterMode = LSDAdvance:
                                               double endpointDistance = 10.0,
                                               double mergeThreshold = 0.6);
 
+/** @brief Computes the response of line segments on the image they were detected in: how much
+evidence of an edge they carry, for ranking lines (KeyLine::response of LSDAdvance::detect) and for
+stage 1's strong segments.
+
+@param image 8-bit gray, BGR or BGRA image, not empty (colour is converted to gray as detect()
+converts it).
+@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), (x1, y1, x2, y2) in
+pixels, finite, oriented as LSD orients them (brighter side on the left).
+@param responses Output N x 1 CV_32FC1 (std::vector<float> works), in the order of lines:
+@f$v \cdot (l / \max(W, H)) \cdot (\bar c / 255)^2@f$, with l the length in pixels, @f$\bar c@f$ the mean
+gray-level step across the segment: at the centre of each unit step along it, the bilinear gray
+level 1 px to its left minus 1 px to its right (coordinates clamped into the image), negative
+steps counting 0; and v = 1 for a segment inside the image, 0.1 for one the image border cuts (an
+endpoint within 2 px of the first or last pixel centre of a row or column, or beyond). In [0,
+sqrt(2)]: cv::line_descriptor::LSDDetector's response (l / max(W, H)) for a line of full contrast
+(255 gray levels) inside the image, less for weaker ones, 0 for a segment whose left is not
+brighter.
+
+Ranked by response, a line budget keeps long lines of high contrast first, short lines of high
+contrast before long faint ones, and lines the border cuts last: measured on HPatches and KITTI,
+these are the lines LBD matches again, and correctly, in the next view (doc/matching.md). Throws cv::Exception on an empty image, another
+image type, or another layout of lines.
+*/
+CV_EXPORTS_W void computeLineResponses(InputArray image, InputArray lines, OutputArray responses);
+
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
 /** @brief Converts segments to KeyLines of octave 0, field by field as
 cv::line_descriptor::LSDDetector does, for the LBD descriptor (@cite LBD) and its matcher.
@@ -648,9 +688,9 @@ width - 1 (height - 1); then `startPoint*` and
 midpoint, `lineLength` the length in pixels, `angle` = atan2(dy, dx) in radians in (-pi, pi],
 `size` = dx * dy (LSDDetector's definition, signed), `numOfPixels` the number of pixels of the
 8-connected digital line between the endpoints, `octave` 0, `class_id` the index of the segment,
-and `response` = lineLength / max(width, height), in [0, sqrt(2)]: the longer the line, the
-higher, so it ranks lines by the length that makes them stable to track and distinctive to
-describe.
+and `response` = lineLength / max(width, height), in [0, sqrt(2)], as LSDDetector sets it (the
+length alone: these are lines without their image; LSDAdvance::detect(image, keylines) sets
+computeLineResponses()'s instead).
 */
 CV_EXPORTS void linesToKeyLines(InputArray lines, Size imageSize, std::vector<line_descriptor::KeyLine>& keylines);
 

@@ -1,0 +1,126 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The response of a segment: its length weighted by the square of the mean gray-level step
+// across it, a tenth of that when the image border cuts it. It ranks lines for matching
+// (KeyLine::response) and lets stage 1 keep short segments with strong evidence
+// (doc/matching.md).
+
+#include "precomp.hpp"
+
+namespace cv {
+namespace ximgproc {
+namespace lsda {
+
+namespace {
+
+// Bilinear interpolation in the cell whose top-left pixel is p, `right` and `down` bytes to the
+// next pixel and row (0 on the image's last column or row).
+inline float bilinear(const uchar* p, int right, size_t down, float fx, float fy)
+{
+    const float top = p[0] + fx * (float)(p[right] - p[0]);
+    const float bottom = p[down] + fx * (float)(p[down + right] - p[down]);
+    return top + fy * (bottom - top);
+}
+
+// Bilinear gray level at (x, y), coordinates clamped into the image.
+float grayAt(const Mat& gray, float x, float y)
+{
+    x = std::min(std::max(x, 0.f), (float)(gray.cols - 1));
+    y = std::min(std::max(y, 0.f), (float)(gray.rows - 1));
+    const int x0 = std::min((int)x, std::max(gray.cols - 2, 0)), y0 = std::min((int)y, std::max(gray.rows - 2, 0));
+    return bilinear(gray.ptr<uchar>(y0) + x0, x0 + 1 < gray.cols ? 1 : 0, y0 + 1 < gray.rows ? gray.step[0] : 0,
+                    x - (float)x0, y - (float)y0);
+}
+
+// Sum over the samples p0 + k step (k < samples) of the positive part of gray(p + left) -
+// gray(p - left), at clamped coordinates, or directly when `inside`: every probe lies in
+// [0, cols - 2] x [0, rows - 2].
+double positiveSteps(const Mat& gray, Point2f p0, Point2f step, Point2f left, int samples, bool inside)
+{
+    double sum = 0.0;
+    for (int k = 0; k < samples; k++)
+    {
+        const Point2f p = p0 + (float)k * step, l = p + left, r = p - left;
+        float across;
+        if (inside)
+        {
+            const int lx = (int)l.x, ly = (int)l.y, rx = (int)r.x, ry = (int)r.y;
+            across = bilinear(gray.ptr<uchar>(ly) + lx, 1, gray.step[0], l.x - (float)lx, l.y - (float)ly) -
+                     bilinear(gray.ptr<uchar>(ry) + rx, 1, gray.step[0], r.x - (float)rx, r.y - (float)ry);
+        }
+        else
+            across = grayAt(gray, l.x, l.y) - grayAt(gray, r.x, r.y);
+        sum += std::max(across, 0.f);  // the wrong polarity is no evidence for this segment
+    }
+    return sum;
+}
+
+// An endpoint this close to the image's edge (pixels from the first or last pixel centre), or
+// beyond it, means the frame cuts the segment.
+constexpr double kBorderMargin = 2.0;
+// The response of a cut segment is scaled by this: measured, it then ranks as if it came after
+// every segment inside the image (1/4 keeps half of that gain; doc/matching.md).
+constexpr double kCutFactor = 0.1;
+
+bool cutByBorder(const Vec4f& s, Size size)
+{
+    const auto near = [](double v, int side) { return v < kBorderMargin || v > side - 1 - kBorderMargin; };
+    return near(s[0], size.width) || near(s[2], size.width) || near(s[1], size.height) || near(s[3], size.height);
+}
+
+} // namespace
+
+double meanContrast(const Mat& gray, const Vec4f& s)
+{
+    CV_CheckTypeEQ(gray.type(), CV_8UC1, "meanContrast samples a gray image");
+    const Point2d a(s[0], s[1]), d(s[2] - s[0], s[3] - s[1]);
+    const double len = std::sqrt(d.dot(d));
+    if (!(len > 0) || gray.empty())
+        return 0.0;
+    const Point2f left((float)(d.y / len), (float)(-d.x / len));  // unit normal to the left of d, y pointing down
+    // One sample at the centre of each unit step; the step across the edge is taken 1 px either
+    // side, which spans LSD's sub-pixel placement of the segment on a sharp edge.
+    const int samples = std::max(1, cvRound(len));
+    const Point2f step((float)(d.x / samples), (float)(d.y / samples));
+    const Point2f first((float)a.x + 0.5f * step.x, (float)a.y + 0.5f * step.y);
+    // The probes lie within 1 px of the segment: inside when its endpoints are 1 px inside the
+    // cells of the image.
+    const auto within = [](float v, int side) { return v >= 1.f && v <= (float)side - 3.f; };
+    const bool inside = within(s[0], gray.cols) && within(s[2], gray.cols) && within(s[1], gray.rows) &&
+                        within(s[3], gray.rows);
+    const double sum = positiveSteps(gray, first, step, left, samples, inside);
+    return sum / samples;
+}
+
+void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::vector<float>& responses)
+{
+    const double longerSide = std::max(gray.cols, gray.rows);
+    responses.resize(segments.size());
+    for (size_t i = 0; i < segments.size(); i++)
+    {
+        const double contrast = meanContrast(gray, segments[i]) / 255.0;
+        // A segment the frame cuts shows a part of its line that changes from view to view, and
+        // LBD's bands reach out of the image: it is found again less often, and matched wrongly
+        // more often (measured on HPatches and KITTI, doc/matching.md).
+        const double visibility = cutByBorder(segments[i], gray.size()) ? kCutFactor : 1.0;
+        responses[i] = (float)(segmentLength(segments[i]) / longerSide * contrast * contrast * visibility);
+    }
+}
+
+} // namespace lsda
+
+void computeLineResponses(InputArray image, InputArray lines, OutputArray responses)
+{
+    CV_INSTRUMENT_REGION();
+    const Mat gray = lsda::toGray8U(image);
+    const std::vector<Vec4f> segments = lsda::toSegments(lines, "computeLineResponses: lines");
+    if (!segments.empty() && !checkRange(Mat(segments), true))
+        CV_Error(Error::StsOutOfRange, "computeLineResponses: segment coordinates must be finite");
+    std::vector<float> values;
+    lsda::lineResponses(gray, segments, values);
+    Mat(values).copyTo(responses);
+}
+
+}} // namespace cv::ximgproc
