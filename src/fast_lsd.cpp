@@ -342,28 +342,33 @@ void FastLsd::growRegion(int seed, double tolerance)
 
 void FastLsd::regionToRect(double prec, double p, Rect& rect)
 {
-    // Centre of mass and inertia of the region, each pixel weighted by its gradient norm.
-    double sx = 0, sy = 0, sum = 0;
+    // Centre of mass and inertia of the region, each pixel weighted by its gradient norm, from
+    // moments about the seed in one pass. Coordinates from buffer indices by a multiplication: the
+    // rounding of q / stride is corrected, so that no integer division is needed.
+    const double invStride = 1.0 / stride;
+    const int seedY = (int)(regionIndex[0] * invStride);
+    const Point origin(regionIndex[0] - seedY * stride - 1, seedY - 1);
+    double sum = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
     for (int i = 0; i < regionSize; i++)
     {
         const int q = regionIndex[i];
-        const int y = q / stride;
-        regionPixel[i] = Point(q - y * stride - 1, y - 1);
+        int y = (int)(q * invStride);
+        y += (y + 1) * stride <= q;
+        y -= y * stride > q;
+        const Point at(q - y * stride - 1, y - 1);
+        regionPixel[i] = at;
         const double w = gradNorm[q];
-        sx += w * regionPixel[i].x;
-        sy += w * regionPixel[i].y;
+        const double dx = at.x - origin.x, dy = at.y - origin.y;
         sum += w;
+        sx += w * dx;
+        sy += w * dy;
+        sxx += w * dx * dx;
+        syy += w * dy * dy;
+        sxy += w * dx * dy;
     }
-    const double cx = sx / sum, cy = sy / sum;
-    double ixx = 0, iyy = 0, ixy = 0;
-    for (int i = 0; i < regionSize; i++)
-    {
-        const double w = gradNorm[regionIndex[i]];
-        const double ddx = regionPixel[i].x - cx, ddy = regionPixel[i].y - cy;
-        ixx += w * ddy * ddy;
-        iyy += w * ddx * ddx;
-        ixy -= w * ddx * ddy;
-    }
+    const double mx = sx / sum, my = sy / sum;
+    const double cx = origin.x + mx, cy = origin.y + my;
+    const double ixx = syy - sum * my * my, iyy = sxx - sum * mx * mx, ixy = -(sxy - sum * mx * my);
     // The rectangle's direction is the eigenvector of the smallest eigenvalue, turned to point
     // along the region's level lines.
     const double lambda = 0.5 * (ixx + iyy - std::sqrt((ixx - iyy) * (ixx - iyy) + 4.0 * ixy * ixy));
