@@ -25,6 +25,8 @@
 #                                                       opencv_lsd_advance::opencv_lsd_advance
 #   ${CMAKE_INSTALL_LIBDIR}/pkgconfig/opencv_lsd_advance.pc
 #   bin/lsd_advance_*                                   the sample programs (BUILD_EXAMPLES=ON)
+#   bin/setup_vars_lsd_advance.sh                       PATH, LD_LIBRARY_PATH, PKG_CONFIG_PATH,
+#                                                       CMAKE_PREFIX_PATH, PYTHONPATH of the install
 #   share/opencv4/samples/lsd_advance/                  the sample sources and samples/consumer/
 # Tests, perf tests, OpenCV's ts and the fuzzer are not installed.
 # Version: the module carries the version of the OpenCV it is built against, as opencv_contrib
@@ -260,6 +262,36 @@ install(CODE [[
 ]])
 install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc"
   DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+
+# bin/setup_vars_lsd_advance.sh: the environment of an install outside the system's directories
+# (as OpenCV's bin/setup_vars_opencv4.sh), written at install time for the prefix given to
+# `cmake --install --prefix`. Its PYTHONPATH line is there when the Python module is installed.
+set(LSDA_SETUP_PYTHONDIR "")
+if(LSD_ADVANCE_PYTHON)
+  set(LSDA_SETUP_PYTHONDIR "${LSD_ADVANCE_PYTHON_INSTALL_DIR}")
+endif()
+install(CODE "
+  set(LSDA_SETUP_TEMPLATE \"${LSDA_ROOT}/cmake/setup_vars_lsd_advance.sh.in\")
+  set(LSDA_SETUP_FILE \"${CMAKE_BINARY_DIR}/install/setup_vars_lsd_advance.sh\")
+  set(LSDA_SETUP_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
+  set(LSDA_SETUP_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
+  set(LSDA_SETUP_PYTHONDIR \"${LSDA_SETUP_PYTHONDIR}\")")
+install(CODE [[
+  set(LSDA_SETUP_PREFIX "${CMAKE_INSTALL_PREFIX}")
+  foreach(_dir BIN LIB PYTHON)
+    if(IS_ABSOLUTE "${LSDA_SETUP_${_dir}DIR}")
+      set(LSDA_SETUP_${_dir} "${LSDA_SETUP_${_dir}DIR}")
+    else()
+      set(LSDA_SETUP_${_dir} "${LSDA_SETUP_PREFIX}/${LSDA_SETUP_${_dir}DIR}")
+    endif()
+  endforeach()
+  set(LSDA_SETUP_PYTHON_LINE "")
+  if(LSDA_SETUP_PYTHONDIR)
+    set(LSDA_SETUP_PYTHON_LINE "export PYTHONPATH=\"${LSDA_SETUP_PYTHON}\${PYTHONPATH:+:\$PYTHONPATH}\"")
+  endif()
+  configure_file("${LSDA_SETUP_TEMPLATE}" "${LSDA_SETUP_FILE}" @ONLY)
+]])
+install(PROGRAMS "${CMAKE_BINARY_DIR}/install/setup_vars_lsd_advance.sh" DESTINATION "${CMAKE_INSTALL_BINDIR}")
 
 # Samples: the programs, with an RPATH to the installed library, and their sources (as OpenCV
 # installs a module's samples) together with the consumer project samples/consumer/.
