@@ -238,59 +238,48 @@ install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advanceConfig.cmake"
 
 # pkg-config: written at install time, so that its prefix is the one given to
 # `cmake --install --prefix` (CMAKE_INSTALL_PREFIX of the install script), not the configured one.
+# So is bin/setup_vars_lsd_advance.sh, the environment of an install outside the system's
+# directories (as OpenCV's bin/setup_vars_opencv4.sh); its PYTHONPATH line is there when the
+# Python module is installed.
 set(LSDA_PC_CFLAGS "")
 foreach(_def ${LSDA_MODULE_DEFINITIONS})
   string(APPEND LSDA_PC_CFLAGS " -D${_def}")
 endforeach()
-install(CODE "
-  set(LSDA_PC_TEMPLATE \"${LSDA_ROOT}/cmake/opencv_lsd_advance.pc.in\")
-  set(LSDA_PC_FILE \"${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc\")
-  set(LSDA_PC_CFLAGS \"${LSDA_PC_CFLAGS}\")
-  set(LSDA_VERSION \"${LSDA_VERSION}\")
-  set(LSDA_INSTALL_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
-  set(LSDA_INSTALL_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")")
-install(CODE [[
-  set(LSDA_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
-  foreach(_dir LIBDIR INCLUDEDIR)
-    if(IS_ABSOLUTE "${LSDA_INSTALL_${_dir}}")
-      set(LSDA_PC_${_dir} "${LSDA_INSTALL_${_dir}}")
-    else()
-      set(LSDA_PC_${_dir} "\${prefix}/${LSDA_INSTALL_${_dir}}")
-    endif()
-  endforeach()
-  configure_file("${LSDA_PC_TEMPLATE}" "${LSDA_PC_FILE}" @ONLY)
-]])
-install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc"
-  DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
-
-# bin/setup_vars_lsd_advance.sh: the environment of an install outside the system's directories
-# (as OpenCV's bin/setup_vars_opencv4.sh), written at install time for the prefix given to
-# `cmake --install --prefix`. Its PYTHONPATH line is there when the Python module is installed.
 set(LSDA_SETUP_PYTHONDIR "")
 if(LSD_ADVANCE_PYTHON)
   set(LSDA_SETUP_PYTHONDIR "${LSD_ADVANCE_PYTHON_INSTALL_DIR}")
 endif()
 install(CODE "
-  set(LSDA_SETUP_TEMPLATE \"${LSDA_ROOT}/cmake/setup_vars_lsd_advance.sh.in\")
-  set(LSDA_SETUP_FILE \"${CMAKE_BINARY_DIR}/install/setup_vars_lsd_advance.sh\")
-  set(LSDA_SETUP_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
-  set(LSDA_SETUP_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
-  set(LSDA_SETUP_PYTHONDIR \"${LSDA_SETUP_PYTHONDIR}\")")
+  set(LSDA_TEMPLATE_DIR \"${LSDA_ROOT}/cmake\")
+  set(LSDA_GENERATED_DIR \"${CMAKE_BINARY_DIR}/install\")
+  set(LSDA_PC_CFLAGS \"${LSDA_PC_CFLAGS}\")
+  set(LSDA_VERSION \"${LSDA_VERSION}\")
+  set(LSDA_INSTALL_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
+  set(LSDA_INSTALL_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")
+  set(LSDA_INSTALL_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
+  set(LSDA_INSTALL_PYTHONDIR \"${LSDA_SETUP_PYTHONDIR}\")")
 install(CODE [[
-  set(LSDA_SETUP_PREFIX "${CMAKE_INSTALL_PREFIX}")
-  foreach(_dir BIN LIB PYTHON)
-    if(IS_ABSOLUTE "${LSDA_SETUP_${_dir}DIR}")
-      set(LSDA_SETUP_${_dir} "${LSDA_SETUP_${_dir}DIR}")
+  set(LSDA_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+  foreach(_dir LIBDIR INCLUDEDIR BINDIR PYTHONDIR)
+    if(IS_ABSOLUTE "${LSDA_INSTALL_${_dir}}")
+      set(LSDA_PC_${_dir} "${LSDA_INSTALL_${_dir}}")
+      set(LSDA_SETUP_${_dir} "${LSDA_INSTALL_${_dir}}")
     else()
-      set(LSDA_SETUP_${_dir} "${LSDA_SETUP_PREFIX}/${LSDA_SETUP_${_dir}DIR}")
+      set(LSDA_PC_${_dir} "\${prefix}/${LSDA_INSTALL_${_dir}}")
+      set(LSDA_SETUP_${_dir} "${CMAKE_INSTALL_PREFIX}/${LSDA_INSTALL_${_dir}}")
     endif()
   endforeach()
+  configure_file("${LSDA_TEMPLATE_DIR}/opencv_lsd_advance.pc.in" "${LSDA_GENERATED_DIR}/opencv_lsd_advance.pc" @ONLY)
+  set(LSDA_SETUP_PREFIX "${CMAKE_INSTALL_PREFIX}")
   set(LSDA_SETUP_PYTHON_LINE "")
-  if(LSDA_SETUP_PYTHONDIR)
-    set(LSDA_SETUP_PYTHON_LINE "export PYTHONPATH=\"${LSDA_SETUP_PYTHON}\${PYTHONPATH:+:\$PYTHONPATH}\"")
+  if(LSDA_INSTALL_PYTHONDIR)
+    set(LSDA_SETUP_PYTHON_LINE "export PYTHONPATH=\"${LSDA_SETUP_PYTHONDIR}\${PYTHONPATH:+:\$PYTHONPATH}\"")
   endif()
-  configure_file("${LSDA_SETUP_TEMPLATE}" "${LSDA_SETUP_FILE}" @ONLY)
+  configure_file("${LSDA_TEMPLATE_DIR}/setup_vars_lsd_advance.sh.in" "${LSDA_GENERATED_DIR}/setup_vars_lsd_advance.sh"
+                 @ONLY)
 ]])
+install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc"
+  DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
 install(PROGRAMS "${CMAKE_BINARY_DIR}/install/setup_vars_lsd_advance.sh" DESTINATION "${CMAKE_INSTALL_BINDIR}")
 
 # Samples: the programs, with an RPATH to the installed library, and their sources (as OpenCV

@@ -109,6 +109,14 @@ out="$("$WORK/consumer/build/lsd_advance_consumer" "$IMAGE")" || fail "lsd_advan
 echo "$out"
 cmake_count="$(count_in "$out" "")"
 if [ -z "$cmake_count" ] || [ "$cmake_count" -le 0 ]; then fail "the CMake consumer reported no segments: '$out'"; fi
+# Bad input: one "Error:" line and exit status 1, as from every sample program.
+for bad in "" "$WORK/no_such_image.jpg"; do
+  rc=0
+  err="$("$WORK/consumer/build/lsd_advance_consumer" ${bad:+"$bad"} 2>&1 >/dev/null)" || rc=$?
+  if [ "$rc" -ne 1 ] || [ "$(wc -l <<<"$err")" -ne 1 ] || [[ "$err" != "Error: "* ]]; then
+    fail "lsd_advance_consumer ${bad:-without an image} should print one 'Error:' line and exit 1, got $rc: $err"
+  fi
+done
 
 step "pkg-config consumer (g++ main.cpp \$(pkg-config --cflags --libs opencv_lsd_advance))"
 export PKG_CONFIG_PATH="$PC_DIR${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
