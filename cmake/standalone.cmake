@@ -17,6 +17,9 @@
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
 #   LSD_ADVANCE_FUZZ=ON    the libFuzzer target lsd_advance_fuzz (fuzz/; needs clang; scripts/fuzz.sh)
+#   LSD_ADVANCE_ELSED_DIR=<dir>  ELSED's sources (<dir>/src/ELSED.cpp; CI: ../shared/peers/elsed),
+#                          compiled from that folder as an optional peer: the samples get the method
+#                          `elsed` and the perf suite its ELSED cases. Default: empty, no peer.
 #
 # `cmake --install <build> [--prefix <p>]` (GNUInstallDirs; scripts/check_install.sh checks it):
 #   include/opencv4/opencv2/lsd_advance.hpp, include/opencv4/opencv2/lsd_advance/*.hpp  (as OpenCV's)
@@ -37,6 +40,7 @@ option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
 set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
 option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
+set(LSD_ADVANCE_ELSED_DIR "" CACHE PATH "ELSED source folder, built as an optional peer of the samples and perf suite (empty: none)")
 
 include(GNUInstallDirs)
 
@@ -142,6 +146,33 @@ if(CMAKE_SYSTEM_NAME STREQUAL "Linux")
 endif()
 
 # ---------------------------------------------------------------------------------------------
+# ELSED, the optional peer detector: compiled from its own folder (never copied here) for
+# side-by-side measurement in the samples and the perf suite, which see LSD_ADVANCE_HAVE_ELSED.
+set(LSDA_PEER_LIBS "")
+if(LSD_ADVANCE_ELSED_DIR)
+  get_filename_component(_elsed_dir "${LSD_ADVANCE_ELSED_DIR}" ABSOLUTE)
+  set(_elsed_srcs "")
+  foreach(_f EdgeDrawer.cpp ELSED.cpp FullSegmentInfo.cpp)
+    if(NOT EXISTS "${_elsed_dir}/src/${_f}")
+      message(FATAL_ERROR "lsd_advance: LSD_ADVANCE_ELSED_DIR=${LSD_ADVANCE_ELSED_DIR} has no src/${_f} "
+                          "(expected ELSED's sources; leave the option empty to build without the peer)")
+    endif()
+    list(APPEND _elsed_srcs "${_elsed_dir}/src/${_f}")
+  endforeach()
+  add_library(lsda_elsed_peer STATIC ${_elsed_srcs})
+  # SYSTEM: its headers are not ours and are not held to the module's warning set.
+  target_include_directories(lsda_elsed_peer SYSTEM PUBLIC "${_elsed_dir}/src" ${OpenCV_INCLUDE_DIRS})
+  target_link_libraries(lsda_elsed_peer PUBLIC opencv_core opencv_imgproc)
+  target_compile_definitions(lsda_elsed_peer PUBLIC LSD_ADVANCE_HAVE_ELSED=1)
+  set_target_properties(lsda_elsed_peer PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(lsda_elsed_peer PRIVATE -w)
+  endif()
+  set(LSDA_PEER_LIBS lsda_elsed_peer)
+  message(STATUS "lsd_advance: ELSED peer from ${_elsed_dir}")
+endif()
+
+# ---------------------------------------------------------------------------------------------
 # Samples
 set(LSDA_SAMPLE_TARGETS "")
 if(BUILD_EXAMPLES)
@@ -149,7 +180,7 @@ if(BUILD_EXAMPLES)
   foreach(_src ${LSDA_SAMPLES})
     get_filename_component(_name "${_src}" NAME_WE)
     add_executable(${_name} "${_src}")
-    target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
+    target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS} ${LSDA_PEER_LIBS})
     target_compile_options(${_name} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
     list(APPEND LSDA_SAMPLE_TARGETS ${_name})
@@ -176,6 +207,9 @@ if(BUILD_TESTS)
       ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
     target_compile_options(${_target} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
+    if(_kind STREQUAL "perf")
+      target_link_libraries(${_target} PRIVATE ${LSDA_PEER_LIBS})
+    endif()
   endforeach()
 
   # ctest: find cv::samples::findFile() data (Debian's opencv-doc) unless the caller set it

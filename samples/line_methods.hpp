@@ -16,9 +16,14 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc.hpp>
 
+#ifdef LSD_ADVANCE_HAVE_ELSED
+#include "ELSED.h"   // the optional peer, from its own folder (cmake -DLSD_ADVANCE_ELSED_DIR=<dir>)
+#endif
+
 #include <algorithm>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -67,7 +72,11 @@ inline const char* lineMethodNames()
 {
     return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, lsdadvance_merge, "
            "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_lsd, lsdadvance_fld, "
-           "lsdadvance_edlines, lsdadvance_edlines_tuned";
+           "lsdadvance_edlines, lsdadvance_edlines_tuned"
+#ifdef LSD_ADVANCE_HAVE_ELSED
+           ", elsed"
+#endif
+        ;
 }
 
 inline LineMethod lineMethodOf(const std::string& name,
@@ -170,6 +179,17 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
     {
         Ptr<LineSegmentDetector> lsd = createLineSegmentDetector(LSD_REFINE_STD, 0.5, 0.6, 2.0, 22.5, 0, 0.6, 1024);
         return lineMethodOf("PL-VINS LSD", [lsd](const Mat& g, std::vector<Vec4f>& l) { detectPlVins(lsd, g, l); });
+    }
+    if (name == "elsed")
+    {
+#ifdef LSD_ADVANCE_HAVE_ELSED
+        // ELSED (Suarez et al., Pattern Recognition 2022) with its defaults.
+        std::shared_ptr<upm::ELSED> elsed = std::make_shared<upm::ELSED>();
+        return lineMethodOf("ELSED", [elsed](const Mat& g, std::vector<Vec4f>& l) { l = elsed->detect(g); });
+#else
+        CV_Error(Error::StsBadArg, "method 'elsed' needs the ELSED peer: configure the build with "
+                                   "-DLSD_ADVANCE_ELSED_DIR=<ELSED source folder>");
+#endif
     }
     if (name == "lsdadvance")
     {

@@ -19,6 +19,9 @@
 #                          ${XDG_CACHE_HOME:-~/.cache}/lsd_advance/opencv-<version>, fetched there)
 #   LSD_ADVANCE_DATA_DIR   test data directory, passed through to the tests
 #   LSD_ADVANCE_JOBS       parallel build jobs (default 2)
+#   LSD_ADVANCE_ELSED_DIR  ELSED's sources for the optional peer in the samples and perf suite
+#                          (default: ../shared/peers/elsed beside the repository when present;
+#                          set it empty to build without; scripts/elsed_peer.sh)
 #   GTEST_FILTER           the usual gtest filter, if a subset is wanted
 set -euo pipefail
 
@@ -39,7 +42,8 @@ echo "OPENCV_SOURCE_DIR=$OPENCV_SOURCE_DIR"
 
 section "configure ($BUILD)"
 cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
-  -DBUILD_TESTS=ON -DBUILD_EXAMPLES=ON -DOPENCV_SOURCE_DIR="$OPENCV_SOURCE_DIR"
+  -DBUILD_TESTS=ON -DBUILD_EXAMPLES=ON -DOPENCV_SOURCE_DIR="$OPENCV_SOURCE_DIR" \
+  "$(bash "$REPO/scripts/elsed_peer.sh")"
 
 section "build"
 cmake --build "$BUILD" -j"$JOBS"
