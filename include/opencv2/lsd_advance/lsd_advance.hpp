@@ -240,7 +240,13 @@ public:
         @note EDLines orients a segment along the edge chain it traced, not by the gradient:
         LSDAdvance turns round each of its segments that is brighter on its right (see
         BaseDetector), so that stage 3 and the output keep LSD's orientation. */
-        BASE_EDLINES = 2
+        BASE_EDLINES = 2,
+        /** The module's own implementation of the LSD algorithm (@cite Rafael12) with the lsd*
+        parameters, written for speed (doc/performance.md); it gives OpenCV's LineSegmentDetector's
+        segments (tested against it on real images) in a fraction of its time. With
+        LSD_REFINE_ADV it validates every segment by its number of false alarms as the published
+        algorithm does, where OpenCV's LineSegmentDetector keeps nearly all of them. */
+        BASE_FAST_LSD = 3
     };
 
     /** @brief Detects line segments.
