@@ -140,14 +140,21 @@ public:
     //! The option's value as an integer in [low, high].
     int integer(const std::string& name, int low, int high = std::numeric_limits<int>::max()) const
     {
-        const std::string value = text(name);
-        char* end = nullptr;
-        errno = 0;
-        const long v = std::strtol(value.c_str(), &end, 10);
-        if (value.empty() || *end != '\0' || errno == ERANGE || v < low || v > high)
-            throw std::runtime_error("--" + name + " must be an integer " + rangeText(low, high, false) + ", got '" +
-                                     value + "'");
-        return (int)v;
+        return integerOf(name, text(name), low, high);
+    }
+
+    //! The option's value as a comma-separated list of integers in [low, high] (at least one).
+    std::vector<int> integers(const std::string& name, int low, int high = std::numeric_limits<int>::max()) const
+    {
+        std::vector<int> values;
+        std::stringstream list(text(name));
+        std::string item;
+        while (std::getline(list, item, ','))
+            values.push_back(integerOf(name, trimmed(item), low, high));
+        if (values.empty())
+            throw std::runtime_error("--" + name + " must be integers " + rangeText(low, high, false) +
+                                     " separated by commas, got ''");
+        return values;
     }
 
     //! The option's value as a finite number in [low, high], or (low, high] with lowExcluded.
@@ -169,6 +176,18 @@ private:
         bool required = false;
         std::string help;
     };
+
+    //! value (of option --name) as an integer in [low, high].
+    static int integerOf(const std::string& name, const std::string& value, int low, int high)
+    {
+        char* end = nullptr;
+        errno = 0;
+        const long v = std::strtol(value.c_str(), &end, 10);
+        if (value.empty() || *end != '\0' || errno == ERANGE || v < low || v > high)
+            throw std::runtime_error("--" + name + " must be an integer " + rangeText(low, high, false) + ", got '" +
+                                     value + "'");
+        return (int)v;
+    }
 
     static std::string trimmed(const std::string& s)
     {

@@ -299,7 +299,9 @@ Table benchmarkYorkUrban(const std::vector<LineMethod>& methods, const std::vect
 struct LineMatchOptions
 {
     bool enabled = false;
-    int top = 0;  //!< when > 0, each method matches only its `top` lines of highest response
+    //! Line budgets: each method matches only its N lines of highest response, for each N here
+    //! (0: all its lines).
+    std::vector<int> budgets = { 0 };
     std::string rank = "own";  //!< the response that ranks them: own, length or contrast
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     LineMatchParams params;
@@ -307,21 +309,27 @@ struct LineMatchOptions
 };
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-// A front end's line budget: the method's `top` lines of highest response (all when top <= 0).
+// A front end's line budget: the method's `budget` lines of highest response (all when budget <= 0).
 // "own" is the KeyLine response the method's own detector gives: LSDAdvance's
 // computeLineResponses, LSDDetector's length for the others; "length" and "contrast" rank every
 // method alike, by the one or the other.
 std::vector<Vec4f> budgetLines(const LineMethod& method, const Mat& gray, const std::vector<Vec4f>& lines,
-                               const LineMatchOptions& matching)
+                               const LineMatchOptions& matching, int budget)
 {
-    if (matching.top <= 0)
+    if (budget <= 0)
         return lines;
     std::vector<float> responses;
     if (matching.rank == "contrast" || (matching.rank == "own" && method.lsdAdvance))
         computeLineResponses(gray, lines, responses);
     else
         responses = lengthResponses(lines, gray.size());
-    return bestLines(lines, responses, matching.top);
+    return bestLines(lines, responses, budget);
+}
+
+// The matching rows are per budget when one is set: a column says which.
+bool budgetColumn(const LineMatchOptions& matching)
+{
+    return matching.budgets.size() > 1 || matching.budgets[0] > 0;
 }
 
 // Matches of one method accumulated over image pairs.
@@ -366,6 +374,8 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
     const bool withPoses = !sequence.P0.empty() && !sequence.poses.empty();
     if (matching.enabled)
     {
+        if (budgetColumn(matching))
+            table.header.insert(table.header.begin() + 1, "lines / frame (budget)");
         table.header.push_back("matches / pair");
         if (withPoses)
             for (const char* h : { "consistent / pair", "undecidable / pair", "precision (consistent / decidable)" })
@@ -373,9 +383,11 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
         for (const char* h : { "tracks / frame", "track length (frames, mean)", "tracks >= 5 frames" })
             table.header.push_back(h);
     }
-    std::vector<MatchTotals> totals(methods.size());
-    std::vector<LineTracks> tracks(methods.size());
-    std::vector<DescribedLines> previous(methods.size());
+    // Per budget b and method m, at b * methods.size() + m.
+    const size_t runs = matching.budgets.size() * methods.size();
+    std::vector<MatchTotals> totals(runs);
+    std::vector<LineTracks> tracks(runs);
+    std::vector<DescribedLines> previous(runs);
 #else
     CV_UNUSED(matching);
 #endif
@@ -395,51 +407,61 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
             if (!matching.enabled)
                 continue;
-            DescribedLines current = describeLines(gray, budgetLines(methods[m], gray, lines, matching));
-            std::vector<DMatch> matches;
-            if (k > 0)
+            for (size_t b = 0; b < matching.budgets.size(); b++)
             {
-                matches = matchLines(previous[m], current, matching.params);
-                if (withPoses)
+                const size_t r = b * methods.size() + m;
+                DescribedLines current = describeLines(gray, budgetLines(methods[m], gray, lines, matching, matching.budgets[b]));
+                std::vector<DMatch> matches;
+                if (k > 0)
                 {
-                    const Mat F = fundamentalFromPoses(sequence.P0, sequence.poses[k - 1], sequence.poses[k]);
-                    totals[m].addEpipolar(evaluateEpipolarMatches(previous[m].lines, current.lines, matches, F));
+                    matches = matchLines(previous[r], current, matching.params);
+                    if (withPoses)
+                    {
+                        const Mat F = fundamentalFromPoses(sequence.P0, sequence.poses[k - 1], sequence.poses[k]);
+                        totals[r].addEpipolar(evaluateEpipolarMatches(previous[r].lines, current.lines, matches, F));
+                    }
+                    else
+                    {
+                        totals[r].pairs++;
+                        totals[r].matches += (double)matches.size();
+                    }
                 }
-                else
-                {
-                    totals[m].pairs++;
-                    totals[m].matches += (double)matches.size();
-                }
+                tracks[r].addFrame(current.lines.size(), matches);
+                previous[r] = current;
             }
-            tracks[m].addFrame(current.lines.size(), matches);
-            previous[m] = current;
 #endif
         }
     }
     std::cerr << "\n";
-    for (size_t m = 0; m < methods.size(); m++)
-    {
-        double cm, cs, sm, ss, tm, ts;
-        meanStd(counts[m], cm, cs);
-        meanStd(shares[m], sm, ss);
-        meanStd(ms[m], tm, ts);
-        table.rows.push_back({ methods[m].name, format("%.1f", cm), format("%.1f", cs), format("%.3f", sm),
-                               format("%.3f", ss), format("%.1f", tm), format("%.1f", ts),
-                               format("%.1f", median(ms[m])) });
+    const size_t rowsPerMethod = matching.enabled ? matching.budgets.size() : 1;
+    for (size_t b = 0; b < rowsPerMethod; b++)
+        for (size_t m = 0; m < methods.size(); m++)
+        {
+            double cm, cs, sm, ss, tm, ts;
+            meanStd(counts[m], cm, cs);
+            meanStd(shares[m], sm, ss);
+            meanStd(ms[m], tm, ts);
+            table.rows.push_back({ methods[m].name, format("%.1f", cm), format("%.1f", cs), format("%.3f", sm),
+                                   format("%.3f", ss), format("%.1f", tm), format("%.1f", ts),
+                                   format("%.1f", median(ms[m])) });
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-        if (!matching.enabled)
-            continue;
-        const MatchTotals& t = totals[m];
-        table.rows.back().push_back(format("%.1f", t.perPair(t.matches)));
-        if (withPoses)
-            for (const std::string& cell : { format("%.1f", t.perPair(t.correct)), format("%.1f", t.perPair(t.undecidable)),
-                                             format("%.3f", t.precision()) })
-                table.rows.back().push_back(cell);
-        for (const std::string& cell : { format("%.1f", tracks[m].perFrame()), format("%.2f", tracks[m].meanLength()),
-                                         format("%d", tracks[m].atLeast(5)) })
-            table.rows.back().push_back(cell);
+            if (!matching.enabled)
+                continue;
+            std::vector<std::string>& row = table.rows.back();
+            if (budgetColumn(matching))
+                row.insert(row.begin() + 1, format("%d", matching.budgets[b]));
+            const size_t r = b * methods.size() + m;
+            const MatchTotals& t = totals[r];
+            row.push_back(format("%.1f", t.perPair(t.matches)));
+            if (withPoses)
+                for (const std::string& cell : { format("%.1f", t.perPair(t.correct)), format("%.1f", t.perPair(t.undecidable)),
+                                                 format("%.3f", t.precision()) })
+                    row.push_back(cell);
+            for (const std::string& cell : { format("%.1f", tracks[r].perFrame()), format("%.2f", tracks[r].meanLength()),
+                                             format("%d", tracks[r].atLeast(5)) })
+                row.push_back(cell);
 #endif
-    }
+        }
     return table;
 }
 
@@ -450,8 +472,12 @@ Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vec
     Table table;
     table.header = { "method", "segments / image", "matches / pair", "correct / pair", "precision",
                      "repeatability", "localisation error (px)", "ms / image (median)" };
-    std::vector<MatchTotals> totals(methods.size());
-    std::vector<double> segments(methods.size(), 0.0);
+    if (budgetColumn(matching))
+        table.header.insert(table.header.begin() + 1, "lines / image (budget)");
+    // Per budget b and method m, at b * methods.size() + m.
+    const size_t runs = matching.budgets.size() * methods.size();
+    std::vector<MatchTotals> totals(runs);
+    std::vector<double> segments(runs, 0.0);
     std::vector<std::vector<double> > ms(methods.size());
     for (size_t k = 0; k < pairs.size(); k++)
     {
@@ -464,25 +490,33 @@ Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vec
             std::vector<Vec4f> lines1, lines2;
             ms[m].push_back(timedDetect(methods[m], gray1, repeats, lines1, true));
             ms[m].push_back(timedDetect(methods[m], gray2, repeats, lines2, true));
-            lines1 = budgetLines(methods[m], gray1, lines1, matching);
-            lines2 = budgetLines(methods[m], gray2, lines2, matching);
-            segments[m] += (double)(lines1.size() + lines2.size());
-            const std::vector<DMatch> matches =
-                matchLines(describeLines(gray1, lines1), describeLines(gray2, lines2), matching.params);
-            totals[m].addHomography(
-                evaluateHomographyMatches(lines1, lines2, matches, pairs[k].H, gray1.size(), gray2.size()));
+            for (size_t b = 0; b < matching.budgets.size(); b++)
+            {
+                const size_t r = b * methods.size() + m;
+                const std::vector<Vec4f> kept1 = budgetLines(methods[m], gray1, lines1, matching, matching.budgets[b]);
+                const std::vector<Vec4f> kept2 = budgetLines(methods[m], gray2, lines2, matching, matching.budgets[b]);
+                segments[r] += (double)(kept1.size() + kept2.size());
+                const std::vector<DMatch> matches =
+                    matchLines(describeLines(gray1, kept1), describeLines(gray2, kept2), matching.params);
+                totals[r].addHomography(
+                    evaluateHomographyMatches(kept1, kept2, matches, pairs[k].H, gray1.size(), gray2.size()));
+            }
         }
     }
     std::cerr << "\n";
-    for (size_t m = 0; m < methods.size(); m++)
-    {
-        const MatchTotals& t = totals[m];
-        table.rows.push_back({ methods[m].name, format("%.1f", segments[m] / (2.0 * pairs.size())),
-                               format("%.1f", t.perPair(t.matches)), format("%.1f", t.perPair(t.correct)),
-                               format("%.3f", t.precision()), format("%.3f", t.visible > 0 ? t.repeated / t.visible : 0.0),
-                               format("%.2f", t.repeated > 0 ? t.errorSum / t.repeated : 0.0),
-                               format("%.1f", median(ms[m])) });
-    }
+    for (size_t b = 0; b < matching.budgets.size(); b++)
+        for (size_t m = 0; m < methods.size(); m++)
+        {
+            const size_t r = b * methods.size() + m;
+            const MatchTotals& t = totals[r];
+            table.rows.push_back({ methods[m].name, format("%.1f", segments[r] / (2.0 * pairs.size())),
+                                   format("%.1f", t.perPair(t.matches)), format("%.1f", t.perPair(t.correct)),
+                                   format("%.3f", t.precision()), format("%.3f", t.visible > 0 ? t.repeated / t.visible : 0.0),
+                                   format("%.2f", t.repeated > 0 ? t.errorSum / t.repeated : 0.0),
+                                   format("%.1f", median(ms[m])) });
+            if (budgetColumn(matching))
+                table.rows.back().insert(table.rows.back().begin() + 1, format("%d", matching.budgets[b]));
+        }
     return table;
 }
 #endif
@@ -510,7 +544,7 @@ int run(const CommandLine& args)
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     matching.enabled = !args.has("no-match");
     matching.params.maxHamming = args.integer("max-hamming", 0, 256);
-    matching.top = args.integer("top", 0);
+    matching.budgets = args.integers("top", 0);
     matching.rank = args.oneOf("rank", { "own", "length", "contrast" });
 #else
     if (dataset == "homography")
@@ -631,7 +665,8 @@ int main(int argc, char** argv)
         "{homography |          | homography without --data: 3x3 matrix file from image1 to image2 (text, or OpenCV XML) }"
         "{max-hamming | 30      | LBD matching: largest Hamming distance of a kept mutual nearest neighbour, 0 to 256 }"
         "{no-match |            | sequence: skip the LBD matching columns }"
-        "{top      | 0          | LBD matching: each method matches only its N lines of highest response per image (0: all), >= 0 }"
+        "{top      | 0          | LBD matching: each method matches only its N lines of highest response per image (0: all), >= 0; "
+                                  "a comma-separated list gives one row per N and method }"
         "{rank     | own        | the response --top ranks by: own (each method's KeyLine response: LSDAdvance's "
                                   "computeLineResponses, the length for the others), length, or contrast "
                                   "(computeLineResponses for every method) }"

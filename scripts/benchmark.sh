@@ -8,7 +8,8 @@
 # Produces the tables of README "Results": every method in one run per data set, one thread,
 # on YorkUrban (all images, then the odd images the defaults were not tuned on), KITTI and
 # EuRoC, then LBD line matching on the HPatches graffiti pairs, OpenCV's graf1/graf3 and KITTI
-# (doc/matching.md). DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository.
+# (doc/matching.md), with all lines and at line budgets of 100, 200 and 400 per image, and the
+# tracks the matches chain into on KITTI and EuRoC. DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository.
 # Builds (or brings up to date) the benchmark program first. With ELSED's sources beside the
 # repository (../shared/peers/elsed) or in LSD_ADVANCE_ELSED_DIR, ELSED is built as an optional
 # peer and measured in every table. Takes about 20 minutes.
@@ -41,6 +42,7 @@ PEER=""
 STILL="lsd,fld,fld_merge,edlines$PEER,plvins,lsdadvance_paper,lsdadvance_base,lsdadvance"
 MATCHING="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_merge,lsdadvance"
 SEQUENCE="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_filter,lsdadvance_alpha1,lsdadvance,lsdadvance_continuous,lsdadvance_tracking"
+BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance"
 
 echo "### YorkUrban-LineSegment, all 51 images"
 echo
@@ -70,10 +72,18 @@ echo "### LBD matching, KITTI consecutive frames (epipolar check, 50 pairs)"
 echo
 "$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$MATCHING"
 echo
-echo "### LBD matching at an equal line budget: HPatches v_graffiti, each method's 500 longest segments"
+echo "### LBD matching at equal line budgets (each method's N lines of highest KeyLine response): HPatches v_graffiti"
 echo
-"$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$MATCHING" --top=500
+"$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$BUDGET" --top=100,200,400
 echo
-echo "### LBD matching at an equal line budget: KITTI, each method's 400 longest segments"
+echo "### LBD matching at equal line budgets: OpenCV's graf1.png / graf3.png"
 echo
-"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$MATCHING" --top=400
+"$B" --dataset=homography --image1=graf1.png --image2=graf3.png --homography=H1to3p.xml --methods="$BUDGET" --top=100,200,400
+echo
+echo "### LBD matching and tracks at equal line budgets: KITTI"
+echo
+"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$BUDGET" --top=100,200,400
+echo
+echo "### Tracks at equal line budgets: EuRoC V1_01, still camera"
+echo
+"$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$BUDGET" --top=100,200,400
