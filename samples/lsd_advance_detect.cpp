@@ -254,11 +254,15 @@ Mat drawFilter(StageCanvas canvas, const Stages& st)
     for (const Vec4f& s : st.filtered)
         canvas.segment(s, kKept, w + 1);
     const int dropped = (int)(input.size() - st.filtered.size());
-    const std::string title = format("Stage 1, length filter on the %s segments: min length %.1f px (alpha %.2f)%s%s",
-                                     st.filterFirst ? "base" : "merged", st.stats.minLength, st.stats.alpha,
-                                     st.filterOn ? "" : " - filter off", canvas.shownPart().c_str());
-    return withCaption(canvas.image, title, { { kKept, format("kept: %zu", st.filtered.size()) },
-                                        { kDropped, format("dropped (shorter): %d", dropped) } });
+    // Short segments stay when strong (setKeepStrongSegments): then the response threshold is shown too.
+    const bool strong = st.stats.minResponse > 0;
+    const std::string title = format("Stage 1, length filter on the %s segments: min length %.1f px%s (alpha %.2f)%s%s",
+                                     st.filterFirst ? "base" : "merged", st.stats.minLength,
+                                     strong ? format(" or min response %.4f", st.stats.minResponse).c_str() : "",
+                                     st.stats.alpha, st.filterOn ? "" : " - filter off", canvas.shownPart().c_str());
+    return withCaption(canvas.image, title,
+                       { { kKept, format("kept: %zu", st.filtered.size()) },
+                         { kDropped, format(strong ? "dropped (shorter and weaker): %d" : "dropped (shorter): %d", dropped) } });
 }
 
 // (b) Stage 2: each group of two or more segments in its own colour, segments alone in grey.

@@ -418,11 +418,15 @@ def draw_filter(canvas, st):
             canvas.segment(s, DROPPED, w)
     for s in st.filtered:
         canvas.segment(s, KEPT, w + 1)
-    title = "Stage 1, length filter on the %s segments: min length %.1f px (alpha %.2f)%s%s" % (
-        "base" if st.filter_first else "merged", st.stats.minLength, st.stats.alpha,
+    # Short segments stay when strong (setKeepStrongSegments): then the response threshold is shown too.
+    strong = st.stats.minResponse > 0
+    title = "Stage 1, length filter on the %s segments: min length %.1f px%s (alpha %.2f)%s%s" % (
+        "base" if st.filter_first else "merged", st.stats.minLength,
+        " or min response %.4f" % st.stats.minResponse if strong else "", st.stats.alpha,
         "" if st.filter_on else " - filter off", canvas.shown_part())
+    dropped = "dropped (shorter and weaker): %d" if strong else "dropped (shorter): %d"
     return with_caption(canvas.image, title, [(KEPT, "kept: %d" % len(st.filtered)),
-                                              (DROPPED, "dropped (shorter): %d" % (len(inputs) - len(st.filtered)))])
+                                              (DROPPED, dropped % (len(inputs) - len(st.filtered)))])
 
 
 def draw_groups(canvas, st):
