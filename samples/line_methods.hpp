@@ -71,7 +71,7 @@ inline double timedDetect(const LineMethod& method, const cv::Mat& gray, int rep
 inline const char* lineMethodNames()
 {
     return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, lsdadvance_merge, "
-           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_lsd, lsdadvance_fld, "
+           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_full, lsdadvance_opencv_lsd, lsdadvance_fld, "
            "lsdadvance_edlines, lsdadvance_edlines_tuned"
 #ifdef LSD_ADVANCE_HAVE_ELSED
            ", elsed"
@@ -112,6 +112,7 @@ inline cv::Ptr<cv::ximgproc::LSDAdvance> paperLSDAdvance()
 {
     using cv::ximgproc::LSDAdvance;
     cv::Ptr<LSDAdvance> detector = cv::ximgproc::createLSDAdvance();
+    detector->setBaseDetector(LSDAdvance::BASE_LSD);
     detector->setLsdRefine(cv::LSD_REFINE_STD);
     detector->setLsdScale(0.8);
     detector->setLengthThreshold(LSDAdvance::LENGTH_THRESHOLD_PAPER);
@@ -220,11 +221,19 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
     if (name == "lsdadvance_merge")
         return lineMethodOf("LSDAdvance, merging only (no length filter)",
                             ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE));
-    // The default stages on other bases: OpenCV's default LSD set-up (refinement, scale 0.8),
+    // The default stages on other bases: OpenCV's LSD with the default base's set-up (full
+    // resolution, no refinement) and with its own default set-up (refinement, scale 0.8),
     // FastLineDetector and EDLines with their defaults.
+    if (name == "lsdadvance_opencv_full")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_LSD);
+        return lineMethodOf("LSDAdvance on OpenCV's LSD (same set-up)", detector);
+    }
     if (name == "lsdadvance_opencv_lsd")
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_LSD);
         detector->setLsdRefine(LSD_REFINE_STD);
         detector->setLsdScale(0.8);
         return lineMethodOf("LSDAdvance on OpenCV's default LSD", detector);

@@ -241,34 +241,30 @@ void FastLsd::orderPixels()
     const int maxNorm2 = *std::max_element(rowMaxNorm2.begin(), rowMaxNorm2.end());
     // Bin of a pixel: floor(norm * (numBins - 1) / maxNorm).
     const float binScale = maxNorm2 > 0 ? (float)((numBins - 1) / (0.5 * std::sqrt((double)maxNorm2))) : 0.f;
-    // The compaction writes every pixel and moves on past the defined ones (no branch: defined and
-    // undefined pixels alternate at random in textured areas), so it writes one past the last.
-    candidates.resize(definedCount + 1);
-    binOf.resize(definedCount);
+    auto binOf = [&](int q) { return std::min(numBins - 1, (int)(gradNorm[q] * binScale)); };
+    // The defined pixels in raster order, in regionIndex until the regions need it. The compaction
+    // writes every pixel and moves on past the defined ones (no branch: defined and undefined
+    // pixels alternate at random in textured areas), so it writes one past the last.
+    std::vector<int>& defined = regionIndex;
+    defined.resize(definedCount + 1);
     ordered.resize(definedCount);
-    regionIndex.resize(definedCount);
     regionVector.resize(definedCount);
-    regionPixel.resize(definedCount);
     binStart.assign((size_t)numBins + 1, 0);
-    int* candidate = candidates.data();
+    int* next = defined.data();
     for (int y = 0; y < height - 1; y++)
     {
         const int row = (y + 1) * stride + 1;
         const Vec2s* u = &level[row];
         for (int x = 0; x < width - 1; x++)
         {
-            *candidate = row + x;
-            candidate += isFree(u[x]);
+            *next = row + x;
+            next += isFree(u[x]);
         }
     }
+    // Highest bin first; inside a bin, raster order (a stable counting sort).
     int* counts = binStart.data();
     for (int i = 0; i < definedCount; i++)
-    {
-        const int bin = std::min(numBins - 1, (int)(gradNorm[candidates[i]] * binScale));
-        binOf[i] = (ushort)bin;
-        counts[numBins - 1 - bin]++;
-    }
-    // Highest bin first; inside a bin, raster order (a stable counting sort).
+        counts[numBins - 1 - binOf(defined[i])]++;
     int position = 0;
     for (int b = 0; b <= numBins; b++)
     {
@@ -277,7 +273,7 @@ void FastLsd::orderPixels()
         position += count;
     }
     for (int i = 0; i < definedCount; i++)
-        ordered[counts[numBins - 1 - binOf[i]]++] = candidates[i];
+        ordered[counts[numBins - 1 - binOf(defined[i])]++] = defined[i];
 }
 
 template <bool acute>
@@ -342,28 +338,35 @@ void FastLsd::growRegion(int seed, double tolerance)
 
 void FastLsd::regionToRect(double prec, double p, Rect& rect)
 {
-    // Centre of mass and inertia of the region, each pixel weighted by its gradient norm.
-    double sx = 0, sy = 0, sum = 0;
+    // Centre of mass and inertia of the region, each pixel weighted by its gradient norm, from
+    // moments about the seed in one pass. Coordinates from buffer indices by a multiplication: the
+    // rounding of q / stride is corrected, so that no integer division is needed.
+    if ((int)regionPixel.size() < regionSize)
+        regionPixel.resize(regionSize);  // grows to the largest region, once
+    const double invStride = 1.0 / stride;
+    const int seedY = (int)(regionIndex[0] * invStride);
+    const Point origin(regionIndex[0] - seedY * stride - 1, seedY - 1);
+    double sum = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
     for (int i = 0; i < regionSize; i++)
     {
         const int q = regionIndex[i];
-        const int y = q / stride;
-        regionPixel[i] = Point(q - y * stride - 1, y - 1);
+        int y = (int)(q * invStride);
+        y += (y + 1) * stride <= q;
+        y -= y * stride > q;
+        const Point at(q - y * stride - 1, y - 1);
+        regionPixel[i] = at;
         const double w = gradNorm[q];
-        sx += w * regionPixel[i].x;
-        sy += w * regionPixel[i].y;
+        const double dx = at.x - origin.x, dy = at.y - origin.y;
         sum += w;
+        sx += w * dx;
+        sy += w * dy;
+        sxx += w * dx * dx;
+        syy += w * dy * dy;
+        sxy += w * dx * dy;
     }
-    const double cx = sx / sum, cy = sy / sum;
-    double ixx = 0, iyy = 0, ixy = 0;
-    for (int i = 0; i < regionSize; i++)
-    {
-        const double w = gradNorm[regionIndex[i]];
-        const double ddx = regionPixel[i].x - cx, ddy = regionPixel[i].y - cy;
-        ixx += w * ddy * ddy;
-        iyy += w * ddx * ddx;
-        ixy -= w * ddx * ddy;
-    }
+    const double mx = sx / sum, my = sy / sum;
+    const double cx = origin.x + mx, cy = origin.y + my;
+    const double ixx = syy - sum * my * my, iyy = sxx - sum * mx * mx, ixy = -(sxy - sum * mx * my);
     // The rectangle's direction is the eigenvector of the smallest eigenvalue, turned to point
     // along the region's level lines.
     const double lambda = 0.5 * (ixx + iyy - std::sqrt((ixx - iyy) * (ixx - iyy) + 4.0 * ixy * ixy));

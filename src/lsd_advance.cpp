@@ -563,7 +563,7 @@ private:
     lsda::GroupingParams grouping;
     lsda::MergeParams merging;
 
-    int baseDetector = BASE_LSD;
+    int baseDetector = BASE_FAST_LSD;
     lsda::FldParams fld;
     lsda::EdParams ed;
     Ptr<lsda::BaseSegmentDetector> baseSegments;  // built on first use after a base parameter changes
