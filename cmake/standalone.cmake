@@ -28,6 +28,8 @@
 #                                                       opencv_lsd_advance::opencv_lsd_advance
 #   ${CMAKE_INSTALL_LIBDIR}/pkgconfig/opencv_lsd_advance.pc
 #   bin/lsd_advance_*                                   the sample programs (BUILD_EXAMPLES=ON)
+#   bin/setup_vars_lsd_advance.sh                       PATH, LD_LIBRARY_PATH, PKG_CONFIG_PATH,
+#                                                       CMAKE_PREFIX_PATH, PYTHONPATH of the install
 #   share/opencv4/samples/lsd_advance/                  the sample sources and samples/consumer/
 # Tests, perf tests, OpenCV's ts and the fuzzer are not installed.
 # Version: the module carries the version of the OpenCV it is built against, as opencv_contrib
@@ -270,30 +272,49 @@ install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advanceConfig.cmake"
 
 # pkg-config: written at install time, so that its prefix is the one given to
 # `cmake --install --prefix` (CMAKE_INSTALL_PREFIX of the install script), not the configured one.
+# So is bin/setup_vars_lsd_advance.sh, the environment of an install outside the system's
+# directories (as OpenCV's bin/setup_vars_opencv4.sh); its PYTHONPATH line is there when the
+# Python module is installed.
 set(LSDA_PC_CFLAGS "")
 foreach(_def ${LSDA_MODULE_DEFINITIONS})
   string(APPEND LSDA_PC_CFLAGS " -D${_def}")
 endforeach()
+set(LSDA_SETUP_PYTHONDIR "")
+if(LSD_ADVANCE_PYTHON)
+  set(LSDA_SETUP_PYTHONDIR "${LSD_ADVANCE_PYTHON_INSTALL_DIR}")
+endif()
 install(CODE "
-  set(LSDA_PC_TEMPLATE \"${LSDA_ROOT}/cmake/opencv_lsd_advance.pc.in\")
-  set(LSDA_PC_FILE \"${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc\")
+  set(LSDA_TEMPLATE_DIR \"${LSDA_ROOT}/cmake\")
+  set(LSDA_GENERATED_DIR \"${CMAKE_BINARY_DIR}/install\")
   set(LSDA_PC_CFLAGS \"${LSDA_PC_CFLAGS}\")
   set(LSDA_VERSION \"${LSDA_VERSION}\")
   set(LSDA_INSTALL_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
-  set(LSDA_INSTALL_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")")
+  set(LSDA_INSTALL_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")
+  set(LSDA_INSTALL_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
+  set(LSDA_INSTALL_PYTHONDIR \"${LSDA_SETUP_PYTHONDIR}\")")
 install(CODE [[
   set(LSDA_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
-  foreach(_dir LIBDIR INCLUDEDIR)
+  foreach(_dir LIBDIR INCLUDEDIR BINDIR PYTHONDIR)
     if(IS_ABSOLUTE "${LSDA_INSTALL_${_dir}}")
       set(LSDA_PC_${_dir} "${LSDA_INSTALL_${_dir}}")
+      set(LSDA_SETUP_${_dir} "${LSDA_INSTALL_${_dir}}")
     else()
       set(LSDA_PC_${_dir} "\${prefix}/${LSDA_INSTALL_${_dir}}")
+      set(LSDA_SETUP_${_dir} "${CMAKE_INSTALL_PREFIX}/${LSDA_INSTALL_${_dir}}")
     endif()
   endforeach()
-  configure_file("${LSDA_PC_TEMPLATE}" "${LSDA_PC_FILE}" @ONLY)
+  configure_file("${LSDA_TEMPLATE_DIR}/opencv_lsd_advance.pc.in" "${LSDA_GENERATED_DIR}/opencv_lsd_advance.pc" @ONLY)
+  set(LSDA_SETUP_PREFIX "${CMAKE_INSTALL_PREFIX}")
+  set(LSDA_SETUP_PYTHON_LINE "")
+  if(LSDA_INSTALL_PYTHONDIR)
+    set(LSDA_SETUP_PYTHON_LINE "export PYTHONPATH=\"${LSDA_SETUP_PYTHONDIR}\${PYTHONPATH:+:\$PYTHONPATH}\"")
+  endif()
+  configure_file("${LSDA_TEMPLATE_DIR}/setup_vars_lsd_advance.sh.in" "${LSDA_GENERATED_DIR}/setup_vars_lsd_advance.sh"
+                 @ONLY)
 ]])
 install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc"
   DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+install(PROGRAMS "${CMAKE_BINARY_DIR}/install/setup_vars_lsd_advance.sh" DESTINATION "${CMAKE_INSTALL_BINDIR}")
 
 # Samples: the programs, with an RPATH to the installed library, and their sources (as OpenCV
 # installs a module's samples) together with the consumer project samples/consumer/.

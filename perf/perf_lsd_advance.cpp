@@ -24,8 +24,9 @@ enum Method
     FLD,                      // FastLineDetector, defaults
     EDLINES,                  // EdgeDrawing's EDLines, defaults
     LSDA,                     // LSDAdvance, defaults
-    LSDA_BASE_ONLY,           // LSDAdvance's default base LSD, stages off
-    LSDA_ON_OPENCV_LSD,       // LSDAdvance, base LSD with OpenCV's default set-up
+    LSDA_BASE_ONLY,           // LSDAdvance's default base (its own LSD), stages off
+    LSDA_ON_OPENCV_LSD_FULL,  // LSDAdvance on OpenCV's LSD with the default base's set-up (scale 1, no refinement)
+    LSDA_ON_OPENCV_LSD,       // LSDAdvance on OpenCV's LSD with OpenCV's default set-up
     LSDA_ON_FLD,              // LSDAdvance on FastLineDetector
     LSDA_ON_EDLINES,          // LSDAdvance on EDLines
     LSDA_ON_EDLINES_TUNED,    // LSDAdvance on EDLines, the sweep's best set-up (doc/performance.md)
@@ -38,8 +39,8 @@ enum Method
 #endif
 // Expands LSDA_PEER_METHODS before CV_ENUM turns the list into the printed case names.
 #define LSDA_METHOD_ENUM(...) CV_ENUM(__VA_ARGS__)
-LSDA_METHOD_ENUM(MethodType, LSD, FLD, EDLINES, LSDA, LSDA_BASE_ONLY, LSDA_ON_OPENCV_LSD, LSDA_ON_FLD, LSDA_ON_EDLINES,
-                 LSDA_ON_EDLINES_TUNED LSDA_PEER_METHODS)
+LSDA_METHOD_ENUM(MethodType, LSD, FLD, EDLINES, LSDA, LSDA_BASE_ONLY, LSDA_ON_OPENCV_LSD_FULL, LSDA_ON_OPENCV_LSD,
+                 LSDA_ON_FLD, LSDA_ON_EDLINES, LSDA_ON_EDLINES_TUNED LSDA_PEER_METHODS)
 
 typedef std::function<void(const Mat&, std::vector<Vec4f>&)> DetectFunction;
 
@@ -76,8 +77,11 @@ DetectFunction makeDetector(int method)
         advance->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);
         advance->setMergeStrategy(LSDAdvance::MERGE_NONE);
     }
+    else if (method == LSDA_ON_OPENCV_LSD_FULL)
+        advance->setBaseDetector(LSDAdvance::BASE_LSD);
     else if (method == LSDA_ON_OPENCV_LSD)
     {
+        advance->setBaseDetector(LSDAdvance::BASE_LSD);
         advance->setLsdRefine(LSD_REFINE_STD);
         advance->setLsdScale(0.8);
     }

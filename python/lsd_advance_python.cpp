@@ -608,6 +608,7 @@ PYBIND11_MODULE(_lsd_advance, m)
         { "LSDAdvance_BASE_LSD", LSDAdvance::BASE_LSD },
         { "LSDAdvance_BASE_FLD", LSDAdvance::BASE_FLD },
         { "LSDAdvance_BASE_EDLINES", LSDAdvance::BASE_EDLINES },
+        { "LSDAdvance_BASE_FAST_LSD", LSDAdvance::BASE_FAST_LSD },
         { "EPIPOLAR_CONSISTENT", EPIPOLAR_CONSISTENT },
         { "EPIPOLAR_INCONSISTENT", EPIPOLAR_INCONSISTENT },
         { "EPIPOLAR_UNDECIDABLE", EPIPOLAR_UNDECIDABLE },

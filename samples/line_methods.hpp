@@ -8,7 +8,10 @@
 #ifndef OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
 #define OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
 
+#include "command_line.hpp"
+
 #include <opencv2/core/utility.hpp>
+#include <opencv2/core/utils/filesystem.hpp>
 #include <opencv2/lsd_advance.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc.hpp>
@@ -18,8 +21,10 @@
 #endif
 
 #include <algorithm>
+#include <fstream>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -66,7 +71,7 @@ inline double timedDetect(const LineMethod& method, const cv::Mat& gray, int rep
 inline const char* lineMethodNames()
 {
     return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, lsdadvance_merge, "
-           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_lsd, lsdadvance_fld, "
+           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_full, lsdadvance_opencv_lsd, lsdadvance_fld, "
            "lsdadvance_edlines, lsdadvance_edlines_tuned"
 #ifdef LSD_ADVANCE_HAVE_ELSED
            ", elsed"
@@ -107,6 +112,7 @@ inline cv::Ptr<cv::ximgproc::LSDAdvance> paperLSDAdvance()
 {
     using cv::ximgproc::LSDAdvance;
     cv::Ptr<LSDAdvance> detector = cv::ximgproc::createLSDAdvance();
+    detector->setBaseDetector(LSDAdvance::BASE_LSD);
     detector->setLsdRefine(cv::LSD_REFINE_STD);
     detector->setLsdScale(0.8);
     detector->setLengthThreshold(LSDAdvance::LENGTH_THRESHOLD_PAPER);
@@ -116,10 +122,41 @@ inline cv::Ptr<cv::ximgproc::LSDAdvance> paperLSDAdvance()
     return detector;
 }
 
+//! The LSDAdvance parameters file of --params, open for reading; closed for an empty path.
+//! Throws std::runtime_error when it is missing, empty or not valid YAML, XML or JSON (with
+//! file, line and reason for a syntax error).
+inline cv::FileStorage openParamsFile(const std::string& path)
+{
+    cv::FileStorage file;
+    if (path.empty())
+        return file;
+    const std::string accepted = " (YAML, XML or JSON written by LSDAdvance::save() or write())";
+    // Checked here: FileStorage would log an error of its own before returning false.
+    if (!cv::utils::fs::exists(path) || cv::utils::fs::isDirectory(path))
+        throw std::runtime_error("no such parameters file: " + path + accepted);
+    if (std::ifstream(path.c_str()).peek() == std::ifstream::traits_type::eof())
+        throw std::runtime_error("the parameters file " + path + " is empty" + accepted);
+    try
+    {
+        if (file.open(path, cv::FileStorage::READ))
+            return file;
+    }
+    catch (const cv::Exception& e)
+    {
+        std::string message;
+        if (parseErrorMessage(e, message))
+            throw std::runtime_error(message);
+        throw std::runtime_error("cannot read the parameters file " + path + ": " + e.err + accepted);
+    }
+    throw std::runtime_error("cannot read the parameters file " + path + accepted);
+}
+
 //! One of lineMethodNames(); params, when given, configures LSDAdvance. Throws on an unknown name.
 inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& params = cv::FileNode())
 {
     using namespace cv;
+    if (!params.empty() && name != "lsdadvance")
+        CV_Error_(Error::StsBadArg, ("parameters apply to the lsdadvance method only, not to '%s'", name.c_str()));
     if (name == "lsd")
     {
         Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
@@ -164,8 +201,6 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
             detector->read(named.empty() ? params : named);
         return lineMethodOf("LSDAdvance", detector);
     }
-    if (!params.empty())
-        CV_Error_(Error::StsBadArg, ("parameters apply to the lsdadvance method only, not to '%s'", name.c_str()));
     if (name == "lsdadvance_paper")
         return lineMethodOf("LSDAdvance (paper)", paperLSDAdvance());
     if (name == "lsdadvance_filter")
@@ -186,11 +221,19 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
     if (name == "lsdadvance_merge")
         return lineMethodOf("LSDAdvance, merging only (no length filter)",
                             ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE));
-    // The default stages on other bases: OpenCV's default LSD set-up (refinement, scale 0.8),
+    // The default stages on other bases: OpenCV's LSD with the default base's set-up (full
+    // resolution, no refinement) and with its own default set-up (refinement, scale 0.8),
     // FastLineDetector and EDLines with their defaults.
+    if (name == "lsdadvance_opencv_full")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_LSD);
+        return lineMethodOf("LSDAdvance on OpenCV's LSD (same set-up)", detector);
+    }
     if (name == "lsdadvance_opencv_lsd")
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_LSD);
         detector->setLsdRefine(LSD_REFINE_STD);
         detector->setLsdScale(0.8);
         return lineMethodOf("LSDAdvance on OpenCV's default LSD", detector);

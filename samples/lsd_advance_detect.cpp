@@ -8,6 +8,7 @@
 // segments and the time of the detection. For LSDAdvance it also draws what each stage did
 // (--draw=filter,groups,merge), like the figures of the paper, from getLastStageOutputs().
 
+#include "command_line.hpp"
 #include "frame_source.hpp"
 #include "line_methods.hpp"
 
@@ -130,20 +131,27 @@ private:
     bool whole_ = true;
 };
 
-// --zoom=x,y,w,h within the image; the whole image when empty.
-Rect zoomRegion(const std::string& zoom, const Size& imageSize)
+// --zoom=x,y,w,h (pixels, width and height >= 1); an empty rectangle when not given.
+Rect parseZoom(const std::string& zoom)
+{
+    Rect r;
+    char tail = 0;
+    if (!zoom.empty() && (std::sscanf(zoom.c_str(), "%d,%d,%d,%d%c", &r.x, &r.y, &r.width, &r.height, &tail) != 4 ||
+                          r.width < 1 || r.height < 1))
+        throw std::runtime_error("--zoom must be x,y,width,height in pixels, width and height >= 1, got '" + zoom + "'");
+    return r;
+}
+
+// The zoom rectangle within the image; the whole image without --zoom.
+Rect zoomRegion(const Rect& zoom, const Size& imageSize)
 {
     const Rect whole(Point(), imageSize);
     if (zoom.empty())
         return whole;
-    Rect r;
-    char tail = 0;
-    if (std::sscanf(zoom.c_str(), "%d,%d,%d,%d%c", &r.x, &r.y, &r.width, &r.height, &tail) != 4)
-        throw std::runtime_error("--zoom must be x,y,width,height in pixels, got " + zoom);
-    if ((r & whole).area() == 0)
-        throw std::runtime_error(format("--zoom=%s does not overlap the %dx%d image", zoom.c_str(), imageSize.width,
-                                        imageSize.height));
-    return r & whole;
+    if ((zoom & whole).area() == 0)
+        throw std::runtime_error(format("--zoom=%d,%d,%d,%d does not overlap the %dx%d image", zoom.x, zoom.y,
+                                        zoom.width, zoom.height, imageSize.width, imageSize.height));
+    return zoom & whole;
 }
 
 // The drawing with a black band above it: a title, then the legend, wrapped to the width.
@@ -336,10 +344,13 @@ struct Summary
         ms.push_back(detectMs);
     }
 
-    void print(const std::string& method, double longLength) const
+    void print(const std::string& method, double longLength, size_t skipped) const
     {
         std::printf("method:            %s\n", method.c_str());
-        std::printf("images:            %zu\n", images);
+        if (skipped > 0)
+            std::printf("images:            %zu (%zu unreadable file(s) skipped)\n", images, skipped);
+        else
+            std::printf("images:            %zu\n", images);
         std::printf("segments / image:  %.1f\n", segments / (double)images);
         std::printf("long share:        %.3f (>= %g px, over all segments)\n",
                     segments > 0 ? longSegments / segments : 0.0, longLength);
@@ -347,39 +358,27 @@ struct Summary
     }
 };
 
-int run(const CommandLineParser& parser)
+int run(const CommandLine& args)
 {
-    const String input = parser.get<String>("input");
-    const String output = parser.get<String>("output");
-    const String paramsPath = parser.get<String>("params");
-    const bool sequence = parser.has("sequence"), writeTxt = !parser.has("no-segments");
-    const Drawings draw = parseDrawings(parser.has("draw") ? parser.get<std::string>("draw") : std::string());
-    const std::string extension = parser.get<std::string>("ext");
-    const std::string zoom = parser.get<std::string>("zoom");
-    const double longLength = parser.get<double>("long");
-    if (!parser.check())
-    {
-        parser.printErrors();
-        return 1;
-    }
+    const String input = args.text("input");
+    const String output = args.text("output");
+    const bool sequence = args.has("sequence"), writeTxt = !args.has("no-segments");
+    const Drawings draw = parseDrawings(args.has("draw") ? args.text("draw") : std::string());
+    const std::string extension = args.oneOf("ext", { "png", "jpg" });
+    const Rect zoom = parseZoom(args.text("zoom"));
+    const double longLength = args.number("long", 0, kUnbounded, true);
     if (draw.any() && output.empty())
-        throw std::runtime_error("--draw needs --output");
-    if (extension != "png" && extension != "jpg")
-        throw std::runtime_error("--ext must be png or jpg, got " + extension);
+        throw std::runtime_error("--draw needs --output=<folder>");
 
-    FileStorage params;
-    if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))
-        throw std::runtime_error("cannot open " + paramsPath);
-    const LineMethod method = makeLineMethod(parser.get<std::string>("method"),
-                                             params.isOpened() ? params.root() : FileNode());
+    const FileStorage params = openParamsFile(args.text("params"));
+    const LineMethod method = makeLineMethod(args.text("method"), params.isOpened() ? params.root() : FileNode());
     if (draw.ofStages() && !method.lsdAdvance)
         throw std::runtime_error("--draw=filter, groups or merge needs an LSDAdvance method, not " + method.name);
-    FrameSource source(input);
+    FrameSource source(input, "detect");
     if (!output.empty() && !utils::fs::createDirectories(output))
         throw std::runtime_error("cannot create the output folder " + output);
 
     const Ptr<LineSegmentDetector> drawer = createLineSegmentDetector();
-    const size_t total = source.count();
     Summary summary;
     Mat gray;
     std::string stem;
@@ -416,20 +415,11 @@ int run(const CommandLineParser& parser)
             if (draw.merge)
                 writeImage(utils::fs::join(output, stem + "_merge." + extension), drawMerge(canvas, stages));
         }
-        if (!source.isSingleImage())
-        {
-            std::cerr << "\r[detect] " << summary.images;
-            if (total > 0)
-                std::cerr << "/" << total;
-            std::cerr << std::flush;
-        }
     }
-    if (!source.isSingleImage())
-        std::cerr << "\n";
     if (summary.images == 0)
         throw std::runtime_error("no frame in " + input);
 
-    summary.print(method.name, longLength);
+    summary.print(method.name, longLength, source.skipped().size());
     if (!output.empty())
     {
         if (writeTxt)
@@ -438,7 +428,7 @@ int run(const CommandLineParser& parser)
         else
             std::printf("wrote the drawings of %zu image(s) to %s\n", summary.images, output.c_str());
     }
-    return 0;
+    return source.skipped().empty() ? 0 : kExitSkipped;
 }
 
 } // namespace
@@ -458,17 +448,12 @@ int main(int argc, char** argv)
                                  "the merge groups in colours), merge (<stem>_merge.png: fused segments and their pieces); "
                                  "stages = filter,groups,merge }"
         "{ext      | png        | file type of the drawings: png or jpg }"
-        "{zoom     |            | the filter, groups and merge drawings show only this region x,y,width,height (px) "
-                                 "of the image, enlarged to about 900 px wide }"
+        "{zoom     |            | the filter, groups and merge drawings show only this region x,y,width,height (px, "
+                                 "width and height >= 1, overlapping the image) of the image, enlarged to about 900 px wide }"
         "{no-segments |         | with --output, write only the drawings, not <stem>.txt }"
         "{params p |            | YAML/XML of LSDAdvance parameters saved with write(), for the lsdadvance method }"
-        "{long     | 60         | length in pixels from which a segment counts as long }";
-    CommandLineParser parser(argc, argv, keys);
-    parser.about("Detects line segments with LSDAdvance (or another method) and writes them to text files.");
-    if (parser.has("help"))
-    {
-        parser.printMessage();
-        return 0;
-    }
-    return runReportingErrors([&parser] { return run(parser); });
+        "{long     | 60         | length in pixels from which a segment counts as long, > 0 }";
+    const String about = "Detects line segments with LSDAdvance (or another method) and writes them to text files. "
+                         "Exit status: 0, 1 on an error, 2 when unreadable files of a folder were skipped.";
+    return runSample(argc, argv, keys, about, { "sequence", "no-segments" }, { "draw" }, run);
 }

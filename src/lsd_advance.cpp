@@ -182,7 +182,8 @@ public:
 
     void setBaseDetector(int v) CV_OVERRIDE
     {
-        assignEnum(baseDetector, v, "baseDetector", BASE_LSD, BASE_EDLINES, "BASE_LSD, BASE_FLD, BASE_EDLINES");
+        assignEnum(baseDetector, v, "baseDetector", BASE_LSD, BASE_FAST_LSD,
+                   "BASE_LSD, BASE_FLD, BASE_EDLINES, BASE_FAST_LSD");
         baseDetectorChanged();
     }
     int getBaseDetector() const CV_OVERRIDE { return baseDetector; }
@@ -562,7 +563,7 @@ private:
     lsda::GroupingParams grouping;
     lsda::MergeParams merging;
 
-    int baseDetector = BASE_LSD;
+    int baseDetector = BASE_FAST_LSD;
     lsda::FldParams fld;
     lsda::EdParams ed;
     Ptr<lsda::BaseSegmentDetector> baseSegments;  // built on first use after a base parameter changes

@@ -66,7 +66,8 @@ enum class BaseKind
 {
     LSD,
     FLD,
-    EDLINES
+    EDLINES,
+    FAST_LSD
 };
 
 //! Stage 0 behind one interface: OpenCV's detectors, constructed once and reused frame to frame.

@@ -10,11 +10,17 @@
 
 namespace opencv_test { namespace {
 
-const int kBases[] = { LSDAdvance::BASE_LSD, LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES };
+const int kBases[] = { LSDAdvance::BASE_LSD, LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES, LSDAdvance::BASE_FAST_LSD };
 
 const char* baseName(int base)
 {
-    return base == LSDAdvance::BASE_LSD ? "LSD" : (base == LSDAdvance::BASE_FLD ? "FLD" : "EDLines");
+    switch (base)
+    {
+    case LSDAdvance::BASE_LSD: return "LSD";
+    case LSDAdvance::BASE_FLD: return "FLD";
+    case LSDAdvance::BASE_EDLINES: return "EDLines";
+    default: return "fast LSD";
+    }
 }
 
 // A bright rectangle (x 120..519, y 100..379) on a dark, slightly noisy background.
@@ -252,7 +258,7 @@ TEST(LSDAdvance_BaseDetectors, switching_the_base_changes_the_segments_and_back)
     Ptr<LSDAdvance> detector = onBase(LSDAdvance::BASE_LSD, true);
     std::vector<Vec4f> lsd, other, again;
     detector->detect(img, lsd);
-    for (int base : { LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES })
+    for (int base : { LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES, LSDAdvance::BASE_FAST_LSD })
     {
         SCOPED_TRACE(baseName(base));
         detector->setBaseDetector(base);

@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "../src/fast_lsd.hpp"
 
 namespace opencv_test { namespace {
 
@@ -47,15 +48,22 @@ std::vector<Vec4f> detectLsd(const Mat& image)
     return lines;
 }
 
-// OpenCV's LSD with the parameters of a default LSDAdvance: its stage 0.
+// The default base (the module's own LSD) alone, with a default LSDAdvance's parameters: its stage 0.
 std::vector<Vec4f> detectBase(const Mat& image)
 {
     const Ptr<LSDAdvance> d = createLSDAdvance();
+    EXPECT_EQ(LSDAdvance::BASE_FAST_LSD, d->getBaseDetector());
+    lsda::LsdParams p;
+    p.refine = d->getLsdRefine();
+    p.scale = d->getLsdScale();
+    p.sigmaScale = d->getLsdSigmaScale();
+    p.quant = d->getLsdQuant();
+    p.angleTolerance = d->getLsdAngleTolerance();
+    p.logEps = d->getLsdLogEps();
+    p.densityThreshold = d->getLsdDensityThreshold();
+    p.numBins = d->getLsdNumBins();
     std::vector<Vec4f> lines;
-    createLineSegmentDetector(d->getLsdRefine(), d->getLsdScale(), d->getLsdSigmaScale(), d->getLsdQuant(),
-                              d->getLsdAngleTolerance(), d->getLsdLogEps(), d->getLsdDensityThreshold(),
-                              d->getLsdNumBins())
-        ->detect(image, lines);
+    lsda::FastLsd(p).detect(image, lines);
     return lines;
 }
 
@@ -154,6 +162,7 @@ TEST(LSDAdvance_Detect, short_clutter_is_removed_and_long_edges_stay)
     // On OpenCV's default LSD as the base, which sees the 12 px strokes.
     const Mat img = clutterImage(42);
     Ptr<LSDAdvance> detector = createLSDAdvance();
+    detector->setBaseDetector(LSDAdvance::BASE_LSD);
     detector->setLsdRefine(LSD_REFINE_STD);
     detector->setLsdScale(0.8);
     const std::vector<Vec4f> lines = detectLines(detector, img);

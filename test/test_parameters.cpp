@@ -79,8 +79,8 @@ std::vector<IntParameter> intParameters()
           LSDAdvance::MERGE_LONGEST_FIRST, { LSDAdvance::MERGE_NONE, LSDAdvance::MERGE_BASELINES }, { -1, 3 } },
         { "stageOrder", &LSDAdvance::setStageOrder, &LSDAdvance::getStageOrder,
           LSDAdvance::MERGE_THEN_FILTER, { LSDAdvance::FILTER_THEN_MERGE }, { -1, 2 } },
-        { "baseDetector", &LSDAdvance::setBaseDetector, &LSDAdvance::getBaseDetector, LSDAdvance::BASE_LSD,
-          { LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES }, { -1, 3 } },
+        { "baseDetector", &LSDAdvance::setBaseDetector, &LSDAdvance::getBaseDetector, LSDAdvance::BASE_FAST_LSD,
+          { LSDAdvance::BASE_LSD, LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES }, { -1, 4 } },
         { "fldLengthThreshold", &LSDAdvance::setFldLengthThreshold, &LSDAdvance::getFldLengthThreshold, 10, { 1, 100000, 25 }, { 0, -3, 100001 } },
         { "fldCannyApertureSize", &LSDAdvance::setFldCannyApertureSize, &LSDAdvance::getFldCannyApertureSize, 3, { 7, 5 }, { 0, 1, 4, 9, -3 } },
         { "edGradientOperator", &LSDAdvance::setEdGradientOperator, &LSDAdvance::getEdGradientOperator, EdgeDrawing::PREWITT,
@@ -240,7 +240,7 @@ TEST(LSDAdvance_Parameters, read_rejects_wrong_types_and_out_of_range_values)
         "%YAML:1.0\n---\nlsdRefine: 9\n",
         "%YAML:1.0\n---\nedNfaValidation: 2\n",
         "%YAML:1.0\n---\nfldDoMerge: 0.5\n",
-        "%YAML:1.0\n---\nbaseDetector: 3\n",
+        "%YAML:1.0\n---\nbaseDetector: 4\n",
     };
     for (const char* text : bad)
     {
@@ -281,21 +281,24 @@ TEST(LSDAdvance_Parameters, every_base_detector_parameter_changes_the_base_segme
           [](LSDAdvance& d) { d.setLsdDensityThreshold(0.95); } },
         { "lsdNumBins", nothing, [](LSDAdvance& d) { d.setLsdNumBins(4); } },
     };
-    for (const Change& c : changes)
-    {
-        SCOPED_TRACE(c.name);
-        Ptr<LSDAdvance> reference = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
-        Ptr<LSDAdvance> changed = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
-        reference->setMergeStrategy(LSDAdvance::MERGE_NONE);
-        changed->setMergeStrategy(LSDAdvance::MERGE_NONE);
-        c.setUp(*reference);
-        c.setUp(*changed);
-        c.change(*changed);
-        std::vector<Vec4f> expected, lines;
-        reference->detect(img, expected);
-        changed->detect(img, lines);
-        EXPECT_NE(expected, lines);
-    }
+    for (const int base : { LSDAdvance::BASE_LSD, LSDAdvance::BASE_FAST_LSD })  // both take the lsd* parameters
+        for (const Change& c : changes)
+        {
+            SCOPED_TRACE(cv::format("%s, base %d", c.name, base));
+            Ptr<LSDAdvance> reference = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+            Ptr<LSDAdvance> changed = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+            for (LSDAdvance* d : { reference.get(), changed.get() })
+            {
+                d->setBaseDetector(base);
+                d->setMergeStrategy(LSDAdvance::MERGE_NONE);
+                c.setUp(*d);
+            }
+            c.change(*changed);
+            std::vector<Vec4f> expected, lines;
+            reference->detect(img, expected);
+            changed->detect(img, lines);
+            EXPECT_NE(expected, lines);
+        }
 }
 
 TEST(LSDAdvance_Parameters, grouping_and_merging_parameters_change_the_output)

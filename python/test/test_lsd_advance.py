@@ -171,6 +171,7 @@ def test_detect_equals_the_cpp_sample_output(building, tmp_path):
 
 def test_detect_equals_processSegments_of_opencv_lsd(building):
     detector = api.createLSDAdvance()
+    detector.setBaseDetector(api.LSDAdvance_BASE_LSD)
     lsd = cv2.createLineSegmentDetector(detector.getLsdRefine(), detector.getLsdScale(), detector.getLsdSigmaScale(),
                                         detector.getLsdQuant(), detector.getLsdAngleTolerance(), detector.getLsdLogEps(),
                                         detector.getLsdDensityThreshold(), detector.getLsdNumBins())
