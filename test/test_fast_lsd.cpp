@@ -26,10 +26,18 @@ void* operator new(std::size_t size)
     throw std::bad_alloc();
 }
 
+// GCC takes the replaced operator new for the library's and warns that free() does not match it.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void operator delete(void* p) noexcept
 {
     std::free(p);
 }
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic pop
+#endif
 
 namespace opencv_test { namespace {
 
