@@ -264,4 +264,14 @@ TEST(LSDAdvance_FastLsd, allocates_nothing_per_frame_once_warm)
     EXPECT_EQ(0, allocations);
 }
 
+// An image too large for int pixel indices is refused before any pixel is read (the header below
+// points to a few bytes only).
+TEST(LSDAdvance_FastLsd, refuses_images_beyond_2_31_pixels)
+{
+    uchar bytes[16] = {};
+    const Mat huge(50000, 50000, CV_8UC1, bytes);
+    std::vector<Vec4f> lines;
+    EXPECT_THROW(createLSDAdvance()->detect(huge, lines), cv::Exception);
+}
+
 }} // namespace
