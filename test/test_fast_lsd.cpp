@@ -15,9 +15,34 @@
 #include <cstdlib>
 #include <new>
 
-// Counts the allocations of this test program, so that a test can count those of a call.
+// Counts the allocations of this test program, so that a test can count those of a call: under
+// AddressSanitizer through its allocation hook (its own operator new stays, with its checks),
+// otherwise by replacing the global operator new.
 static std::atomic<long> g_allocations(0);
 
+#if defined(__SANITIZE_ADDRESS__)
+#define LSDA_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LSDA_TEST_ASAN 1
+#endif
+#endif
+
+#ifdef LSDA_TEST_ASAN
+// The sanitizers' public interface (sanitizer/allocator_interface.h, which GCC does not install).
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, size_t),
+                                                         void (*free_hook)(const volatile void*));
+
+static void countAllocation(const volatile void*, size_t)
+{
+    g_allocations++;
+}
+
+static void ignoreRelease(const volatile void*) {}
+
+// The sanitizers install no hook unless both are given.
+static const int g_hookInstalled = __sanitizer_install_malloc_and_free_hooks(countAllocation, ignoreRelease);
+#else
 void* operator new(std::size_t size)
 {
     g_allocations++;
@@ -37,6 +62,7 @@ void operator delete(void* p) noexcept
 }
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
 #pragma GCC diagnostic pop
+#endif
 #endif
 
 namespace opencv_test { namespace {
@@ -247,6 +273,9 @@ TEST(LSDAdvance_FastLsd, allocates_nothing_per_frame_once_warm)
     std::vector<Mat> frames;
     for (int i = 0; i < 4; i++)
         frames.push_back(imread(utils::fs::join(folder, cv::format("image_l/%06d.png", i)), IMREAD_GRAYSCALE));
+#ifdef LSDA_TEST_ASAN
+    ASSERT_NE(0, g_hookInstalled);
+#endif
     const int threads = getNumThreads();
     setNumThreads(1);
     Ptr<LSDAdvance> detector = createLSDAdvance();
