@@ -26,10 +26,18 @@ void* operator new(std::size_t size)
     throw std::bad_alloc();
 }
 
+// GCC takes the replaced operator new for the library's and warns that free() does not match it.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void operator delete(void* p) noexcept
 {
     std::free(p);
 }
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic pop
+#endif
 
 namespace opencv_test { namespace {
 
@@ -254,6 +262,16 @@ TEST(LSDAdvance_FastLsd, allocates_nothing_per_frame_once_warm)
     const long allocations = g_allocations - before;
     setNumThreads(threads);
     EXPECT_EQ(0, allocations);
+}
+
+// An image too large for int pixel indices is refused before any pixel is read (the header below
+// points to a few bytes only).
+TEST(LSDAdvance_FastLsd, refuses_images_beyond_2_31_pixels)
+{
+    uchar bytes[16] = {};
+    const Mat huge(50000, 50000, CV_8UC1, bytes);
+    std::vector<Vec4f> lines;
+    EXPECT_THROW(createLSDAdvance()->detect(huge, lines), cv::Exception);
 }
 
 }} // namespace
