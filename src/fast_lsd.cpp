@@ -138,6 +138,11 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
     }
     if (image->cols < 2 || image->rows < 2)
         return;
+    // Pixels are addressed by int.
+    if ((double)(image->cols + 1) * (image->rows + 1) >= (double)INT_MAX)
+        CV_Error_(Error::StsOutOfRange,
+                  ("BASE_FAST_LSD analyses at most 2^31 pixels (at its scale), got %dx%d; use a scale below 1 or BASE_LSD",
+                   image->cols, image->rows));
 
     analysed = *image;
     computeGradient(*image);
@@ -221,10 +226,9 @@ void FastLsd::computeGradient(const Mat& image)
 
     // Every pixel of level is written below: the rows' gradients, the border and the pixels without
     // a gradient (last row and column) as (0, 0).
-    // One pixel more: growRegion reads four pixels from the left of a neighbourhood's bottom row.
-    level.resize(total + 1);
+    level.resize(total);
     std::fill(level.begin(), level.begin() + stride, Vec2s(0, 0));
-    std::fill(level.end() - stride - 1, level.end(), Vec2s(0, 0));
+    std::fill(level.end() - stride, level.end(), Vec2s(0, 0));
     gradNorm.resize(total);
     rowMaxNorm2.assign(height, 0);
     rowDefined.assign(height, 0);
@@ -241,34 +245,30 @@ void FastLsd::orderPixels()
     const int maxNorm2 = *std::max_element(rowMaxNorm2.begin(), rowMaxNorm2.end());
     // Bin of a pixel: floor(norm * (numBins - 1) / maxNorm).
     const float binScale = maxNorm2 > 0 ? (float)((numBins - 1) / (0.5 * std::sqrt((double)maxNorm2))) : 0.f;
-    // The compaction writes every pixel and moves on past the defined ones (no branch: defined and
-    // undefined pixels alternate at random in textured areas), so it writes one past the last.
-    candidates.resize(definedCount + 1);
-    binOf.resize(definedCount);
+    auto binOf = [&](int q) { return std::min(numBins - 1, (int)(gradNorm[q] * binScale)); };
+    // The defined pixels in raster order, in regionIndex until the regions need it. The compaction
+    // writes every pixel and moves on past the defined ones (no branch: defined and undefined
+    // pixels alternate at random in textured areas), so it writes one past the last.
+    std::vector<int>& defined = regionIndex;
+    defined.resize(definedCount + 1);
     ordered.resize(definedCount);
-    regionIndex.resize(definedCount);
     regionVector.resize(definedCount);
-    regionPixel.resize(definedCount);
     binStart.assign((size_t)numBins + 1, 0);
-    int* candidate = candidates.data();
+    int* next = defined.data();
     for (int y = 0; y < height - 1; y++)
     {
         const int row = (y + 1) * stride + 1;
         const Vec2s* u = &level[row];
         for (int x = 0; x < width - 1; x++)
         {
-            *candidate = row + x;
-            candidate += isFree(u[x]);
+            *next = row + x;
+            next += isFree(u[x]);
         }
     }
+    // Highest bin first; inside a bin, raster order (a stable counting sort).
     int* counts = binStart.data();
     for (int i = 0; i < definedCount; i++)
-    {
-        const int bin = std::min(numBins - 1, (int)(gradNorm[candidates[i]] * binScale));
-        binOf[i] = (ushort)bin;
-        counts[numBins - 1 - bin]++;
-    }
-    // Highest bin first; inside a bin, raster order (a stable counting sort).
+        counts[numBins - 1 - binOf(defined[i])]++;
     int position = 0;
     for (int b = 0; b <= numBins; b++)
     {
@@ -277,7 +277,7 @@ void FastLsd::orderPixels()
         position += count;
     }
     for (int i = 0; i < definedCount; i++)
-        ordered[counts[numBins - 1 - binOf[i]]++] = candidates[i];
+        ordered[counts[numBins - 1 - binOf(defined[i])]++] = defined[i];
 }
 
 template <bool acute>
@@ -345,6 +345,8 @@ void FastLsd::regionToRect(double prec, double p, Rect& rect)
     // Centre of mass and inertia of the region, each pixel weighted by its gradient norm, from
     // moments about the seed in one pass. Coordinates from buffer indices by a multiplication: the
     // rounding of q / stride is corrected, so that no integer division is needed.
+    if ((int)regionPixel.size() < regionSize)
+        regionPixel.resize(regionSize);  // grows to the largest region, once
     const double invStride = 1.0 / stride;
     const int seedY = (int)(regionIndex[0] * invStride);
     const Point origin(regionIndex[0] - seedY * stride - 1, seedY - 1);

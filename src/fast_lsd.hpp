@@ -67,16 +67,14 @@ private:
     std::vector<Vec2s> level;
     std::vector<float> gradNorm;    //!< gradient norm |g| / 2 per pixel
     std::vector<int> rowMaxNorm2, rowDefined;
-    std::vector<int> candidates;   //!< defined pixels in raster order
-    std::vector<ushort> binOf;     //!< their bins of gradient norm
     std::vector<int> binStart;
     std::vector<int> ordered;      //!< defined pixels, highest bin first
     int definedCount = 0;
     double logNT = 0;
 
-    // The current region: the buffer indices of its pixels (regionSize of them; the seed first),
-    // their vectors (which level no longer holds), their coordinates (filled by regionToRect), and
-    // the sum of their vectors.
+    // The current region: the buffer indices of its pixels (regionSize of them; the seed first;
+    // before the regions, the defined pixels in raster order), their vectors (which level no
+    // longer holds), their coordinates (filled by regionToRect), and the sum of their vectors.
     std::vector<int> regionIndex;
     std::vector<Vec2s> regionVector;
     std::vector<Point> regionPixel;
