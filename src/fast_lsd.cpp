@@ -138,6 +138,11 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
     }
     if (image->cols < 2 || image->rows < 2)
         return;
+    // Pixels are addressed by int.
+    if ((double)(image->cols + 1) * (image->rows + 1) >= (double)INT_MAX)
+        CV_Error_(Error::StsOutOfRange,
+                  ("BASE_FAST_LSD analyses at most 2^31 pixels (at its scale), got %dx%d; use a scale below 1 or BASE_LSD",
+                   image->cols, image->rows));
 
     analysed = *image;
     computeGradient(*image);
@@ -221,10 +226,9 @@ void FastLsd::computeGradient(const Mat& image)
 
     // Every pixel of level is written below: the rows' gradients, the border and the pixels without
     // a gradient (last row and column) as (0, 0).
-    // One pixel more: growRegion reads four pixels from the left of a neighbourhood's bottom row.
-    level.resize(total + 1);
+    level.resize(total);
     std::fill(level.begin(), level.begin() + stride, Vec2s(0, 0));
-    std::fill(level.end() - stride - 1, level.end(), Vec2s(0, 0));
+    std::fill(level.end() - stride, level.end(), Vec2s(0, 0));
     gradNorm.resize(total);
     rowMaxNorm2.assign(height, 0);
     rowDefined.assign(height, 0);

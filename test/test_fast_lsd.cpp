@@ -15,19 +15,35 @@
 #include <cstdlib>
 #include <new>
 
-// Counts the allocations of this test program, so that a test can count those of a call.
+// Counts the allocations of this test program, so that a test can count those of a call: under
+// AddressSanitizer through its allocation hook (its own operator new stays, with its checks),
+// otherwise by replacing the global operator new.
 static std::atomic<long> g_allocations(0);
 
-// Neither of the two inlined: GCC 12 sees through an inlined one that the memory comes from
-// malloc() or goes to free() and then warns of a mismatch (-Wmismatched-new-delete) in OpenCV
-// 4.10's TEST(), whose factory deletes what it new-ed when the constructor throws.
-#if defined(__GNUC__)
-#define LSDA_NOINLINE __attribute__((noinline))
-#else
-#define LSDA_NOINLINE
+#if defined(__SANITIZE_ADDRESS__)
+#define LSDA_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LSDA_TEST_ASAN 1
+#endif
 #endif
 
-LSDA_NOINLINE void* operator new(std::size_t size)
+#ifdef LSDA_TEST_ASAN
+// The sanitizers' public interface (sanitizer/allocator_interface.h, which GCC does not install).
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, size_t),
+                                                         void (*free_hook)(const volatile void*));
+
+static void countAllocation(const volatile void*, size_t)
+{
+    g_allocations++;
+}
+
+static void ignoreRelease(const volatile void*) {}
+
+// The sanitizers install no hook unless both are given.
+static const int g_hookInstalled = __sanitizer_install_malloc_and_free_hooks(countAllocation, ignoreRelease);
+#else
+void* operator new(std::size_t size)
 {
     g_allocations++;
     if (void* p = std::malloc(size ? size : 1))
@@ -35,10 +51,19 @@ LSDA_NOINLINE void* operator new(std::size_t size)
     throw std::bad_alloc();
 }
 
-LSDA_NOINLINE void operator delete(void* p) noexcept
+// GCC takes the replaced operator new for the library's and warns that free() does not match it.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+void operator delete(void* p) noexcept
 {
     std::free(p);
 }
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic pop
+#endif
+#endif
 
 namespace opencv_test { namespace {
 
@@ -256,6 +281,9 @@ TEST(LSDAdvance_FastLsd, allocates_nothing_per_frame_once_warm)
     std::vector<Mat> frames;
     for (int i = 0; i < 4; i++)
         frames.push_back(imread(utils::fs::join(folder, cv::format("image_l/%06d.png", i)), IMREAD_GRAYSCALE));
+#ifdef LSDA_TEST_ASAN
+    ASSERT_NE(0, g_hookInstalled);
+#endif
     const int threads = getNumThreads();
     setNumThreads(1);
     Ptr<LSDAdvance> detector = createLSDAdvance();
@@ -271,6 +299,16 @@ TEST(LSDAdvance_FastLsd, allocates_nothing_per_frame_once_warm)
     const long allocations = g_allocations - before;
     setNumThreads(threads);
     EXPECT_EQ(0, allocations);
+}
+
+// An image too large for int pixel indices is refused before any pixel is read (the header below
+// points to a few bytes only).
+TEST(LSDAdvance_FastLsd, refuses_images_beyond_2_31_pixels)
+{
+    uchar bytes[16] = {};
+    const Mat huge(50000, 50000, CV_8UC1, bytes);
+    std::vector<Vec4f> lines;
+    EXPECT_THROW(createLSDAdvance()->detect(huge, lines), cv::Exception);
 }
 
 }} // namespace
