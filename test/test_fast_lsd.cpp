@@ -191,15 +191,23 @@ TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_with_standard_refinement_at_scale
     expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.95);
 }
 
-// With LSD_REFINE_ADV both validate segments by their number of false alarms, but OpenCV's
-// LineSegmentDetector keeps nearly every one (its binomial term lacks log(n!)); ours keeps the
-// meaningful ones: fewer segments, nearly all of them OpenCV's too.
-TEST(LSDAdvance_FastLsd, advanced_refinement_keeps_a_subset_of_OpenCV_LSD)
+// With LSD_REFINE_ADV both validate segments by their number of false alarms. OpenCV's
+// LineSegmentDetector before 4.8 keeps nearly every one (its binomial term lacks log(n!), and its
+// rectangle scan misses pixels; fixed by opencv/opencv#23210 in 4.8): ours keeps the meaningful
+// ones, fewer segments, nearly all of them OpenCV's too. From 4.8 on OpenCV validates as
+// published and the two agree (4.10, measured: 97 % of OpenCV's reproduced by ours, 91 % of ours
+// by OpenCV's, which keeps 7 % fewer).
+TEST(LSDAdvance_FastLsd, advanced_refinement_validates_like_OpenCV_LSD)
 {
     const Agreement a = compareWithOpenCV(yorkUrbanImages(5), lsdParams(LSD_REFINE_ADV, 0.8));
     std::cout << "[ INFO ] LSD_REFINE_ADV: OpenCV " << a.opencv << " segments, ours " << a.ours
-              << ", ours reproduced by OpenCV's " << a.ourShare() << std::endl;
+              << ", ours reproduced by OpenCV's " << a.ourShare() << ", OpenCV's by ours " << a.opencvShare()
+              << std::endl;
+#if CV_VERSION_MAJOR == 4 && CV_VERSION_MINOR < 8
     EXPECT_LT(a.ours, a.opencv);
+#else
+    EXPECT_GE(a.opencvShare(), 0.95);
+#endif
     EXPECT_GE(a.ourShare(), 0.9);
 }
 
