@@ -60,7 +60,7 @@ public:
         // Finds sample names such as building.jpg; keeps what it cannot find (video URLs, patterns).
         const cv::String path = cv::samples::findFileOrKeep(input, true);
         if (cv::utils::fs::isDirectory(path))
-            paths_ = cv::ximgproc::loadSequence(path).imagePaths;  // name order; throws when there is none
+            paths_ = cv::ximgproc::line_evaluation::loadSequence(path).imagePaths;  // name order; throws when there is none
         else if (cv::utils::fs::exists(path) && cv::haveImageReader(path))
         {
             paths_.push_back(path);

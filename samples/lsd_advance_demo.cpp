@@ -30,7 +30,7 @@ struct Totals
     void add(const std::vector<Vec4f>& lines, double medianMs, double longLength)
     {
         segments += lines.size();
-        longSegments += (size_t)cvRound(ximgproc::longSegmentShare(lines, longLength) * (double)lines.size());
+        longSegments += (size_t)cvRound(ximgproc::line_evaluation::longSegmentShare(lines, longLength) * (double)lines.size());
         ms.push_back(medianMs);
     }
     void print(const char* name, size_t images) const
@@ -81,7 +81,7 @@ int main(int argc, char** argv)
     }
 
     // A folder is read like a sequence folder (its images in name order), one image per file.
-    const std::vector<String> paths = utils::fs::isDirectory(input) ? ximgproc::loadSequence(input).imagePaths
+    const std::vector<String> paths = utils::fs::isDirectory(input) ? ximgproc::line_evaluation::loadSequence(input).imagePaths
                                                                    : std::vector<String>(1, samples::findFile(input, true, true));
 
     FileStorage params;

@@ -332,7 +332,7 @@ struct Summary
     {
         images++;
         segments += (double)lines.size();
-        longSegments += ximgproc::longSegmentShare(lines, longLength) * (double)lines.size();
+        longSegments += ximgproc::line_evaluation::longSegmentShare(lines, longLength) * (double)lines.size();
         ms.push_back(detectMs);
     }
 
@@ -397,7 +397,7 @@ int run(const CommandLineParser& parser)
         summary.add(lines, tm.getTimeMilli(), longLength);
 
         if (!output.empty() && writeTxt)
-            ximgproc::writeSegments(utils::fs::join(output, stem + ".txt"), lines);
+            ximgproc::line_evaluation::writeSegments(utils::fs::join(output, stem + ".txt"), lines);
         if (draw.lines)
         {
             Mat canvas;

@@ -71,9 +71,9 @@ int matchPair(const LineMethod& method, const String& path1, const String& path2
     std::printf("matches:         %zu\n", matches.size());
     if (!homographyPath.empty())
     {
-        const Mat H = ximgproc::readHomography(samples::findFile(homographyPath, true, true));
-        const ximgproc::HomographyMatchScore s =
-            ximgproc::evaluateHomographyMatches(segments1, segments2, matches, H, gray1.size(), gray2.size());
+        const Mat H = ximgproc::line_evaluation::readHomography(samples::findFile(homographyPath, true, true));
+        const ximgproc::line_evaluation::HomographyMatchScore s =
+            ximgproc::line_evaluation::evaluateHomographyMatches(segments1, segments2, matches, H, gray1.size(), gray2.size());
         std::printf("correct:         %d (precision %.3f; mapped within 3 px, overlapping)\n", s.correct, s.precision);
         std::printf("repeatability:   %.3f (%d of %d visible segments)\n", s.repeatability, s.repeated, s.visible);
         std::printf("localisation:    %.2f px (mean, repeated segments)\n", s.localisationError);
@@ -87,9 +87,9 @@ int matchSequence(const LineMethod& method, const String& input, const LineMatch
                   const String& drawPath)
 {
     const String path = samples::findFileOrKeep(input, true);
-    ximgproc::SequenceData calibration;
+    ximgproc::line_evaluation::SequenceData calibration;
     if (utils::fs::isDirectory(path))
-        calibration = ximgproc::loadSequence(path);
+        calibration = ximgproc::line_evaluation::loadSequence(path);
     const bool withPoses = !calibration.P0.empty() && !calibration.poses.empty();
 
     FrameSource source(input);
@@ -97,7 +97,7 @@ int matchSequence(const LineMethod& method, const String& input, const LineMatch
     DescribedLines previous;
     std::string stem;
     int pairs = 0;
-    ximgproc::EpipolarMatchScore total;
+    ximgproc::line_evaluation::EpipolarMatchScore total;
     size_t totalMatches = 0;
     method.reset();
     for (int frame = 0; source.next(gray, stem); frame++)
@@ -113,10 +113,10 @@ int matchSequence(const LineMethod& method, const String& input, const LineMatch
                         current.lines.size(), matches.size());
             if (withPoses)
             {
-                const Mat F = ximgproc::fundamentalFromPoses(calibration.P0, calibration.poses[frame - 1],
+                const Mat F = ximgproc::line_evaluation::fundamentalFromPoses(calibration.P0, calibration.poses[frame - 1],
                                                              calibration.poses[frame]);
-                const ximgproc::EpipolarMatchScore s =
-                    ximgproc::evaluateEpipolarMatches(previous.lines, current.lines, matches, F);
+                const ximgproc::line_evaluation::EpipolarMatchScore s =
+                    ximgproc::line_evaluation::evaluateEpipolarMatches(previous.lines, current.lines, matches, F);
                 std::printf(", consistent %d, inconsistent %d, undecidable %d", s.consistent, s.inconsistent,
                             s.undecidable);
                 total.consistent += s.consistent;

@@ -32,7 +32,7 @@ export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/open
 B="$BUILD/lsd_advance_benchmark"
 STILL="lsd,fld,fld_merge,edlines,plvins,lsdadvance_paper,lsdadvance_base,lsdadvance"
 MATCHING="lsd,fld,edlines,lsdadvance_paper,lsdadvance_merge,lsdadvance"
-SEQUENCE="lsd,fld,edlines,lsdadvance_paper,lsdadvance_filter,lsdadvance_alpha1,lsdadvance,lsdadvance_continuous,lsdadvance_tracking"
+SEQUENCE="lsd,fld,edlines,lsdadvance_paper,lsdadvance_filter,lsdadvance,lsdadvance_interframe,lsdadvance_continuous,lsdadvance_tracking"
 
 echo "### YorkUrban-LineSegment, all 51 images"
 echo

@@ -39,7 +39,7 @@ namespace {
 class LsdBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit LsdBase(const LsdParams& p)
+    explicit LsdBase(const LSDAdvance::LSDParams& p)
         : lsd(createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
                                         p.logEps, p.densityThreshold, p.numBins))
     {}
@@ -53,7 +53,7 @@ private:
 class FldBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit FldBase(const FldParams& p)
+    explicit FldBase(const LSDAdvance::FLDParams& p)
         : fld(createFastLineDetector(p.lengthThreshold, (float)p.distanceThreshold, p.cannyThreshold1,
                                      p.cannyThreshold2, p.cannyApertureSize, p.doMerge))
     {}
@@ -76,20 +76,7 @@ private:
 class EdLinesBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit EdLinesBase(const EdParams& p) : ed(createEdgeDrawing())
-    {
-        ed->params.EdgeDetectionOperator = p.gradientOperator;
-        ed->params.GradientThresholdValue = p.gradientThreshold;
-        ed->params.AnchorThresholdValue = p.anchorThreshold;
-        ed->params.ScanInterval = p.scanInterval;
-        ed->params.MinPathLength = p.minPathLength;
-        ed->params.Sigma = (float)p.sigma;
-        ed->params.NFAValidation = p.nfaValidation;
-        ed->params.MinLineLength = p.minLineLength;
-        ed->params.LineFitErrorThreshold = p.lineFitErrorThreshold;
-        ed->params.MaxDistanceBetweenTwoLines = p.maxDistanceBetweenTwoLines;
-        ed->params.MaxErrorThreshold = p.maxErrorThreshold;
-    }
+    explicit EdLinesBase(const EdgeDrawing::Params& p) : ed(createEdgeDrawing()) { ed->setParams(p); }
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
     {
         ed->detectEdges(gray);
@@ -103,17 +90,19 @@ private:
 
 } // namespace
 
-Ptr<BaseSegmentDetector> createBaseDetector(BaseKind kind, const LsdParams& lsd, const FldParams& fld,
-                                            const EdParams& ed)
+Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
+                                            const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines)
 {
     switch (kind)
     {
-    case BaseKind::FLD:
-        return makePtr<FldBase>(fld);
-    case BaseKind::EDLINES:
-        return makePtr<EdLinesBase>(ed);
-    default:
+    case LSDAdvance::BASE_LSD:
         return makePtr<LsdBase>(lsd);
+    case LSDAdvance::BASE_FLD:
+        return makePtr<FldBase>(fld);
+    case LSDAdvance::BASE_EDLINES:
+        return makePtr<EdLinesBase>(edLines);
+    default:
+        CV_Error_(Error::StsOutOfRange, ("unknown base detector %d", kind));
     }
 }
 

@@ -65,7 +65,7 @@ int countAtLeast(const std::vector<Vec4f>& segments, double minLength)
     return count;
 }
 
-double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, LengthThreshold rule)
+double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, int rule)
 {
     if (segments.empty())
         return 0.0;
@@ -81,19 +81,25 @@ double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, Lengt
     if (mean <= 0.0)
         return 0.0;
     const double stddev = std::sqrt(std::max(sumSq / n - mean * mean, 0.0));
-    if (rule == LengthThreshold::CAPPED)
+    if (rule == LSDAdvance::LENGTH_THRESHOLD_CAPPED)
         return std::min(mean, stddev) * alpha;
     return std::max((1.0 - std::abs(mean - stddev) / mean) * mean * alpha, 0.0);
 }
 
 void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
-                       std::vector<Vec4f>& kept)
+                       std::vector<Vec4f>& kept, std::vector<int>* keptFrom)
 {
     kept.clear();
     kept.reserve(segments.size());
-    for (const Vec4f& s : segments)
-        if (segmentLength(s) >= minLength)
-            kept.push_back(s);
+    if (keptFrom)
+        keptFrom->clear();
+    for (size_t i = 0; i < segments.size(); i++)
+        if (segmentLength(segments[i]) >= minLength)
+        {
+            kept.push_back(segments[i]);
+            if (keptFrom)
+                keptFrom->push_back((int)i);
+        }
 }
 
 }}} // namespace cv::ximgproc::lsda

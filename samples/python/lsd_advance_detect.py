@@ -59,7 +59,7 @@ def frames(source):
     """(gray image, stem) of an image, of the images of a folder in name order, or of a video."""
     path = cv2.samples.findFile(source, False, True) or source
     if os.path.isdir(path):
-        paths = lsda.loadSequence(path).imagePaths
+        paths = lsda.line_evaluation.loadSequence(path).imagePaths
     elif os.path.isfile(path) and cv2.haveImageReader(path):
         paths = [path]
     else:
@@ -123,9 +123,9 @@ def main():
             lines = np.zeros((0, 1, 4), np.float32)
         ms.append(tm.getTimeMilli())
         segments += len(lines)
-        long_segments += lsda.longSegmentShare(lines, args.long) * len(lines)
+        long_segments += lsda.line_evaluation.longSegmentShare(lines, args.long) * len(lines)
         if args.output:
-            lsda.writeSegments(os.path.join(args.output, stem + ".txt"), lines)
+            lsda.line_evaluation.writeSegments(os.path.join(args.output, stem + ".txt"), lines)
         if args.draw:
             canvas = cv2.cvtColor(gray, cv2.COLOR_GRAY2BGR)
             if len(lines):

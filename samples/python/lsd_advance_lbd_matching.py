@@ -100,8 +100,8 @@ def main():
     print("segments:        %d / %d" % (0 if lines1 is None else len(lines1), 0 if lines2 is None else len(lines2)))
     print("matches:         %d" % len(matches))
     if args.homography:
-        H = lsda.readHomography(find(args.homography))
-        s = lsda.evaluateHomographyMatches(lines1, lines2, matches, H, (gray1.shape[1], gray1.shape[0]),
+        H = lsda.line_evaluation.readHomography(find(args.homography))
+        s = lsda.line_evaluation.evaluateHomographyMatches(lines1, lines2, matches, H, (gray1.shape[1], gray1.shape[0]),
                                            (gray2.shape[1], gray2.shape[0]))
         print("correct:         %d (precision %.3f; mapped within 3 px, overlapping)" % (s.correct, s.precision))
         print("repeatability:   %.3f (%d of %d visible segments)" % (s.repeatability, s.repeated, s.visible))
