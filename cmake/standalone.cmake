@@ -17,6 +17,9 @@
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
 #   LSD_ADVANCE_FUZZ=ON    the libFuzzer target lsd_advance_fuzz (fuzz/; needs clang; scripts/fuzz.sh)
+#   LSD_ADVANCE_ELSED_DIR=<dir>  ELSED's sources (<dir>/src/ELSED.cpp; CI: ../shared/peers/elsed),
+#                          compiled from that folder as an optional peer: the samples get the method
+#                          `elsed` and the perf suite its ELSED cases. Default: empty, no peer.
 #
 # `cmake --install <build> [--prefix <p>]` (GNUInstallDirs; scripts/check_install.sh checks it):
 #   include/opencv4/opencv2/lsd_advance.hpp, include/opencv4/opencv2/lsd_advance/*.hpp  (as OpenCV's)
@@ -25,6 +28,8 @@
 #                                                       opencv_lsd_advance::opencv_lsd_advance
 #   ${CMAKE_INSTALL_LIBDIR}/pkgconfig/opencv_lsd_advance.pc
 #   bin/lsd_advance_*                                   the sample programs (BUILD_EXAMPLES=ON)
+#   bin/setup_vars_lsd_advance.sh                       PATH, LD_LIBRARY_PATH, PKG_CONFIG_PATH,
+#                                                       CMAKE_PREFIX_PATH, PYTHONPATH of the install
 #   share/opencv4/samples/lsd_advance/                  the sample sources and samples/consumer/
 # Tests, perf tests, OpenCV's ts and the fuzzer are not installed.
 # Version: the module carries the version of the OpenCV it is built against, as opencv_contrib
@@ -35,6 +40,7 @@ option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
 set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
 option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
+set(LSD_ADVANCE_ELSED_DIR "" CACHE PATH "ELSED source folder, built as an optional peer of the samples and perf suite (empty: none)")
 
 include(GNUInstallDirs)
 
@@ -140,6 +146,33 @@ if(CMAKE_SYSTEM_NAME STREQUAL "Linux")
 endif()
 
 # ---------------------------------------------------------------------------------------------
+# ELSED, the optional peer detector: compiled from its own folder (never copied here) for
+# side-by-side measurement in the samples and the perf suite, which see LSD_ADVANCE_HAVE_ELSED.
+set(LSDA_PEER_LIBS "")
+if(LSD_ADVANCE_ELSED_DIR)
+  get_filename_component(_elsed_dir "${LSD_ADVANCE_ELSED_DIR}" ABSOLUTE)
+  set(_elsed_srcs "")
+  foreach(_f EdgeDrawer.cpp ELSED.cpp FullSegmentInfo.cpp)
+    if(NOT EXISTS "${_elsed_dir}/src/${_f}")
+      message(FATAL_ERROR "lsd_advance: LSD_ADVANCE_ELSED_DIR=${LSD_ADVANCE_ELSED_DIR} has no src/${_f} "
+                          "(expected ELSED's sources; leave the option empty to build without the peer)")
+    endif()
+    list(APPEND _elsed_srcs "${_elsed_dir}/src/${_f}")
+  endforeach()
+  add_library(lsda_elsed_peer STATIC ${_elsed_srcs})
+  # SYSTEM: its headers are not ours and are not held to the module's warning set.
+  target_include_directories(lsda_elsed_peer SYSTEM PUBLIC "${_elsed_dir}/src" ${OpenCV_INCLUDE_DIRS})
+  target_link_libraries(lsda_elsed_peer PUBLIC opencv_core opencv_imgproc)
+  target_compile_definitions(lsda_elsed_peer PUBLIC LSD_ADVANCE_HAVE_ELSED=1)
+  set_target_properties(lsda_elsed_peer PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(lsda_elsed_peer PRIVATE -w)
+  endif()
+  set(LSDA_PEER_LIBS lsda_elsed_peer)
+  message(STATUS "lsd_advance: ELSED peer from ${_elsed_dir}")
+endif()
+
+# ---------------------------------------------------------------------------------------------
 # Samples
 set(LSDA_SAMPLE_TARGETS "")
 if(BUILD_EXAMPLES)
@@ -147,7 +180,7 @@ if(BUILD_EXAMPLES)
   foreach(_src ${LSDA_SAMPLES})
     get_filename_component(_name "${_src}" NAME_WE)
     add_executable(${_name} "${_src}")
-    target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
+    target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS} ${LSDA_PEER_LIBS})
     target_compile_options(${_name} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
     list(APPEND LSDA_SAMPLE_TARGETS ${_name})
@@ -174,6 +207,9 @@ if(BUILD_TESTS)
       ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
     target_compile_options(${_target} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
+    if(_kind STREQUAL "perf")
+      target_link_libraries(${_target} PRIVATE ${LSDA_PEER_LIBS})
+    endif()
   endforeach()
 
   # ctest: find cv::samples::findFile() data (Debian's opencv-doc) unless the caller set it
@@ -236,30 +272,49 @@ install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advanceConfig.cmake"
 
 # pkg-config: written at install time, so that its prefix is the one given to
 # `cmake --install --prefix` (CMAKE_INSTALL_PREFIX of the install script), not the configured one.
+# So is bin/setup_vars_lsd_advance.sh, the environment of an install outside the system's
+# directories (as OpenCV's bin/setup_vars_opencv4.sh); its PYTHONPATH line is there when the
+# Python module is installed.
 set(LSDA_PC_CFLAGS "")
 foreach(_def ${LSDA_MODULE_DEFINITIONS})
   string(APPEND LSDA_PC_CFLAGS " -D${_def}")
 endforeach()
+set(LSDA_SETUP_PYTHONDIR "")
+if(LSD_ADVANCE_PYTHON)
+  set(LSDA_SETUP_PYTHONDIR "${LSD_ADVANCE_PYTHON_INSTALL_DIR}")
+endif()
 install(CODE "
-  set(LSDA_PC_TEMPLATE \"${LSDA_ROOT}/cmake/opencv_lsd_advance.pc.in\")
-  set(LSDA_PC_FILE \"${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc\")
+  set(LSDA_TEMPLATE_DIR \"${LSDA_ROOT}/cmake\")
+  set(LSDA_GENERATED_DIR \"${CMAKE_BINARY_DIR}/install\")
   set(LSDA_PC_CFLAGS \"${LSDA_PC_CFLAGS}\")
   set(LSDA_VERSION \"${LSDA_VERSION}\")
   set(LSDA_INSTALL_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
-  set(LSDA_INSTALL_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")")
+  set(LSDA_INSTALL_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")
+  set(LSDA_INSTALL_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
+  set(LSDA_INSTALL_PYTHONDIR \"${LSDA_SETUP_PYTHONDIR}\")")
 install(CODE [[
   set(LSDA_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
-  foreach(_dir LIBDIR INCLUDEDIR)
+  foreach(_dir LIBDIR INCLUDEDIR BINDIR PYTHONDIR)
     if(IS_ABSOLUTE "${LSDA_INSTALL_${_dir}}")
       set(LSDA_PC_${_dir} "${LSDA_INSTALL_${_dir}}")
+      set(LSDA_SETUP_${_dir} "${LSDA_INSTALL_${_dir}}")
     else()
       set(LSDA_PC_${_dir} "\${prefix}/${LSDA_INSTALL_${_dir}}")
+      set(LSDA_SETUP_${_dir} "${CMAKE_INSTALL_PREFIX}/${LSDA_INSTALL_${_dir}}")
     endif()
   endforeach()
-  configure_file("${LSDA_PC_TEMPLATE}" "${LSDA_PC_FILE}" @ONLY)
+  configure_file("${LSDA_TEMPLATE_DIR}/opencv_lsd_advance.pc.in" "${LSDA_GENERATED_DIR}/opencv_lsd_advance.pc" @ONLY)
+  set(LSDA_SETUP_PREFIX "${CMAKE_INSTALL_PREFIX}")
+  set(LSDA_SETUP_PYTHON_LINE "")
+  if(LSDA_INSTALL_PYTHONDIR)
+    set(LSDA_SETUP_PYTHON_LINE "export PYTHONPATH=\"${LSDA_SETUP_PYTHONDIR}\${PYTHONPATH:+:\$PYTHONPATH}\"")
+  endif()
+  configure_file("${LSDA_TEMPLATE_DIR}/setup_vars_lsd_advance.sh.in" "${LSDA_GENERATED_DIR}/setup_vars_lsd_advance.sh"
+                 @ONLY)
 ]])
 install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc"
   DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+install(PROGRAMS "${CMAKE_BINARY_DIR}/install/setup_vars_lsd_advance.sh" DESTINATION "${CMAKE_INSTALL_BINDIR}")
 
 # Samples: the programs, with an RPATH to the installed library, and their sources (as OpenCV
 # installs a module's samples) together with the consumer project samples/consumer/.

@@ -2,12 +2,17 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Every LSDAdvance case has the same case for OpenCV's LSD, FLD and EDLines, so that ratios
-// come from one run (doc/performance.md).
+// Every LSDAdvance case has the same case for OpenCV's LSD, FLD and EDLines (and ELSED when the
+// optional peer is built: cmake -DLSD_ADVANCE_ELSED_DIR=<dir>), so that ratios come from one run
+// (doc/performance.md).
 
 #include "perf_precomp.hpp"
 #include "opencv2/ximgproc.hpp"
 #include "opencv2/core/utils/filesystem.hpp"
+
+#ifdef LSD_ADVANCE_HAVE_ELSED
+#include "ELSED.h"
+#endif
 
 namespace opencv_test { namespace {
 
@@ -19,14 +24,23 @@ enum Method
     FLD,                      // FastLineDetector, defaults
     EDLINES,                  // EdgeDrawing's EDLines, defaults
     LSDA,                     // LSDAdvance, defaults (PRESET_MOST_ACCURATE)
-    LSDA_BASE_ONLY,           // LSDAdvance's default base LSD, stages off
-    LSDA_ON_OPENCV_LSD,       // LSDAdvance, base LSD with OpenCV's default set-up
+    LSDA_BASE_ONLY,           // LSDAdvance's default base (its own LSD), stages off
+    LSDA_ON_OPENCV_LSD_FULL,  // LSDAdvance on OpenCV's LSD with the default base's set-up (scale 1, no refinement)
+    LSDA_ON_OPENCV_LSD,       // LSDAdvance on OpenCV's LSD with OpenCV's default set-up (the paper's base)
     LSDA_ON_FLD,              // LSDAdvance on FastLineDetector
     LSDA_ON_EDLINES,          // LSDAdvance on EDLines (PRESET_FASTEST)
-    LSDA_ON_EDLINES_TUNED     // LSDAdvance on EDLines, the sweep's best set-up (doc/performance.md)
+    LSDA_ON_EDLINES_TUNED,    // LSDAdvance on EDLines, the sweep's best set-up (doc/performance.md)
+    ELSED                     // the optional peer ELSED, defaults; a case only when it is built
 };
-CV_ENUM(MethodType, LSD, FLD, EDLINES, LSDA, LSDA_BASE_ONLY, LSDA_ON_OPENCV_LSD, LSDA_ON_FLD, LSDA_ON_EDLINES,
-        LSDA_ON_EDLINES_TUNED)
+#ifdef LSD_ADVANCE_HAVE_ELSED
+#define LSDA_PEER_METHODS , ELSED
+#else
+#define LSDA_PEER_METHODS
+#endif
+// Expands LSDA_PEER_METHODS before CV_ENUM turns the list into the printed case names.
+#define LSDA_METHOD_ENUM(...) CV_ENUM(__VA_ARGS__)
+LSDA_METHOD_ENUM(MethodType, LSD, FLD, EDLINES, LSDA, LSDA_BASE_ONLY, LSDA_ON_OPENCV_LSD_FULL, LSDA_ON_OPENCV_LSD,
+                 LSDA_ON_FLD, LSDA_ON_EDLINES, LSDA_ON_EDLINES_TUNED LSDA_PEER_METHODS)
 
 typedef std::function<void(const Mat&, std::vector<Vec4f>&)> DetectFunction;
 
@@ -50,6 +64,13 @@ DetectFunction makeDetector(int method)
             ed->detectLines(lines);
         };
     }
+#ifdef LSD_ADVANCE_HAVE_ELSED
+    if (method == ELSED)
+    {
+        std::shared_ptr<upm::ELSED> elsed = std::make_shared<upm::ELSED>();
+        return [elsed](const Mat& image, std::vector<Vec4f>& lines) { lines = elsed->detect(image); };
+    }
+#endif
     Ptr<LSDAdvance> advance =
         createLSDAdvance(method == LSDA_ON_EDLINES || method == LSDA_ON_EDLINES_TUNED ? LSDAdvance::PRESET_FASTEST
                                                                                      : LSDAdvance::PRESET_MOST_ACCURATE);
@@ -58,8 +79,13 @@ DetectFunction makeDetector(int method)
         advance->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);
         advance->setMergeStrategy(LSDAdvance::MERGE_NONE);
     }
+    else if (method == LSDA_ON_OPENCV_LSD_FULL)
+        advance->setBaseDetector(LSDAdvance::BASE_LSD);
     else if (method == LSDA_ON_OPENCV_LSD)  // the paper's base
+    {
+        advance->setBaseDetector(LSDAdvance::BASE_LSD);
         advance->setLSDParams(createLSDAdvance(LSDAdvance::PRESET_PAPER)->getLSDParams());
+    }
     else if (method == LSDA_ON_FLD)
         advance->setBaseDetector(LSDAdvance::BASE_FLD);
     else if (method == LSDA_ON_EDLINES_TUNED)

@@ -8,13 +8,23 @@
 #ifndef OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
 #define OPENCV_LSD_ADVANCE_SAMPLES_LINE_METHODS_HPP
 
+#include "command_line.hpp"
+
 #include <opencv2/core/utility.hpp>
+#include <opencv2/core/utils/filesystem.hpp>
 #include <opencv2/lsd_advance.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc.hpp>
 
+#ifdef LSD_ADVANCE_HAVE_ELSED
+#include "ELSED.h"   // the optional peer, from its own folder (cmake -DLSD_ADVANCE_ELSED_DIR=<dir>)
+#endif
+
 #include <algorithm>
+#include <fstream>
 #include <functional>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -61,8 +71,12 @@ inline double timedDetect(const LineMethod& method, const cv::Mat& gray, int rep
 inline const char* lineMethodNames()
 {
     return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, lsdadvance_merge, "
-           "lsdadvance_interframe, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_lsd, lsdadvance_fld, "
-           "lsdadvance_edlines, lsdadvance_edlines_tuned";
+           "lsdadvance_interframe, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_full, lsdadvance_opencv_lsd, lsdadvance_fld, "
+           "lsdadvance_edlines, lsdadvance_edlines_tuned"
+#ifdef LSD_ADVANCE_HAVE_ELSED
+           ", elsed"
+#endif
+        ;
 }
 
 inline LineMethod lineMethodOf(const std::string& name,
@@ -92,10 +106,41 @@ inline void detectPlVins(const cv::Ptr<cv::LineSegmentDetector>& lsd, const cv::
             lines.push_back(l);
 }
 
+//! The LSDAdvance parameters file of --params, open for reading; closed for an empty path.
+//! Throws std::runtime_error when it is missing, empty or not valid YAML, XML or JSON (with
+//! file, line and reason for a syntax error).
+inline cv::FileStorage openParamsFile(const std::string& path)
+{
+    cv::FileStorage file;
+    if (path.empty())
+        return file;
+    const std::string accepted = " (YAML, XML or JSON written by LSDAdvance::save() or write())";
+    // Checked here: FileStorage would log an error of its own before returning false.
+    if (!cv::utils::fs::exists(path) || cv::utils::fs::isDirectory(path))
+        throw std::runtime_error("no such parameters file: " + path + accepted);
+    if (std::ifstream(path.c_str()).peek() == std::ifstream::traits_type::eof())
+        throw std::runtime_error("the parameters file " + path + " is empty" + accepted);
+    try
+    {
+        if (file.open(path, cv::FileStorage::READ))
+            return file;
+    }
+    catch (const cv::Exception& e)
+    {
+        std::string message;
+        if (parseErrorMessage(e, message))
+            throw std::runtime_error(message);
+        throw std::runtime_error("cannot read the parameters file " + path + ": " + e.err + accepted);
+    }
+    throw std::runtime_error("cannot read the parameters file " + path + accepted);
+}
+
 //! One of lineMethodNames(); params, when given, configures LSDAdvance. Throws on an unknown name.
 inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& params = cv::FileNode())
 {
     using namespace cv;
+    if (!params.empty() && name != "lsdadvance")
+        CV_Error_(Error::StsBadArg, ("parameters apply to the lsdadvance method only, not to '%s'", name.c_str()));
     if (name == "lsd")
     {
         Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
@@ -120,6 +165,17 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
         Ptr<LineSegmentDetector> lsd = createLineSegmentDetector(LSD_REFINE_STD, 0.5, 0.6, 2.0, 22.5, 0, 0.6, 1024);
         return lineMethodOf("PL-VINS LSD", [lsd](const Mat& g, std::vector<Vec4f>& l) { detectPlVins(lsd, g, l); });
     }
+    if (name == "elsed")
+    {
+#ifdef LSD_ADVANCE_HAVE_ELSED
+        // ELSED (Suarez et al., Pattern Recognition 2022) with its defaults.
+        std::shared_ptr<upm::ELSED> elsed = std::make_shared<upm::ELSED>();
+        return lineMethodOf("ELSED", [elsed](const Mat& g, std::vector<Vec4f>& l) { l = elsed->detect(g); });
+#else
+        CV_Error(Error::StsBadArg, "method 'elsed' needs the ELSED peer: configure the build with "
+                                   "-DLSD_ADVANCE_ELSED_DIR=<ELSED source folder>");
+#endif
+    }
     if (name == "lsdadvance")
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
@@ -129,8 +185,6 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
             detector->read(named.empty() ? params : named);
         return lineMethodOf("LSDAdvance", detector);
     }
-    if (!params.empty())
-        CV_Error_(Error::StsBadArg, ("parameters apply to the lsdadvance method only, not to '%s'", name.c_str()));
     if (name == "lsdadvance_paper")
         return lineMethodOf("LSDAdvance (paper)", ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_PAPER));
     if (name == "lsdadvance_filter")
@@ -159,27 +213,35 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
                 return lineMethodOf(m.title, detector);
             }
     }
-    // The default stages on other bases: OpenCV's default LSD set-up (refinement, scale 0.8),
+    // The default stages on other bases: OpenCV's LSD with the default base's set-up (full
+    // resolution, no refinement) and with its own default set-up (refinement, scale 0.8),
     // FastLineDetector and EDLines with their defaults.
+    if (name == "lsdadvance_opencv_full")
+    {
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_LSD);
+        return lineMethodOf("LSDAdvance on OpenCV's LSD (same set-up)", detector);
+    }
     if (name == "lsdadvance_opencv_lsd")
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_LSD);
         detector->setLSDParams(ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_PAPER)->getLSDParams());
         return lineMethodOf("LSDAdvance on OpenCV's default LSD", detector);
     }
     if (name == "lsdadvance_fld" || name == "lsdadvance_edlines")
     {
         const bool fld = name == "lsdadvance_fld";
-        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
-        detector->setBaseDetector(fld ? ximgproc::LSDAdvance::BASE_FLD : ximgproc::LSDAdvance::BASE_EDLINES);
-        return lineMethodOf(fld ? "LSDAdvance on FLD" : "LSDAdvance on EDLines", detector);
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_FASTEST);
+        if (fld)
+            detector->setBaseDetector(ximgproc::LSDAdvance::BASE_FLD);
+        return lineMethodOf(fld ? "LSDAdvance on FLD" : "LSDAdvance on EDLines (fastest preset)", detector);
     }
     // EDLines without smoothing and a higher gradient threshold, the paper's length threshold and
     // a 2 px gate: the best of the sweep on the even YorkUrban images (doc/performance.md).
     if (name == "lsdadvance_edlines_tuned")
     {
-        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
-        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_EDLINES);
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_FASTEST);
         ximgproc::EdgeDrawing::Params ed = detector->getEDLinesParams();
         ed.Sigma = 0.5f;
         ed.GradientThresholdValue = 30;

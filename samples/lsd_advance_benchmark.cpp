@@ -13,12 +13,15 @@
 // Prints Markdown tables on stdout, optionally writes CSV and SVG bar charts of time, F and
 // long-segment share per method (--chart), and reports progress on stderr.
 
+#include "command_line.hpp"
+#include "frame_source.hpp"
 #include "line_methods.hpp"
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
 #include "line_matching.hpp"
 #endif
 
 #include <opencv2/core/utility.hpp>
+#include <opencv2/core/utils/filesystem.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/lsd_advance/evaluation.hpp>
 
@@ -79,7 +82,8 @@ struct Table
     void writeCsv(const std::string& path) const
     {
         std::ofstream out(path.c_str());
-        CV_Assert(out && "cannot write the CSV file");
+        if (!out)
+            throw std::runtime_error("cannot write " + path);
         for (size_t i = 0; i < header.size(); i++)
             out << (i ? "," : "") << header[i];
         out << "\n";
@@ -472,6 +476,134 @@ Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vec
 }
 #endif
 
+// Whether OpenCV reads the image; an unreadable one is reported, counted in skipped, and left out of the run.
+bool readable(const std::string& path, size_t& skipped)
+{
+    if (!readGrayImage(path).empty())
+        return true;
+    reportSkipped(path);
+    skipped++;
+    return false;
+}
+
+int run(const CommandLine& args)
+{
+    const std::string dataset = args.oneOf("dataset", { "yorkurban", "sequence", "homography" });
+    const String data = args.text("data");
+    const std::string subset = args.oneOf("subset", { "all", "even", "odd" });
+    const int repeats = args.integer("repeats", 1);
+    const double longLength = args.number("long", 0, kUnbounded, true);
+    const String csv = args.text("csv");
+    const String chartPrefix = args.text("chart");
+    LineMatchOptions matching;
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    matching.enabled = !args.has("no-match");
+    matching.params.maxHamming = args.integer("max-hamming", 0, 256);
+    matching.top = args.integer("top", 0);
+#else
+    if (dataset == "homography")
+        throw std::runtime_error("--dataset=homography needs OpenCV's line_descriptor module, absent from this build");
+#endif
+    setNumThreads(args.integer("threads", 1, 1024));
+    const bool onePair = dataset == "homography" && data.empty();
+    if (onePair && (!args.has("image1") || !args.has("image2") || !args.has("homography")))
+        throw std::runtime_error("--dataset=homography needs --data=<HPatches folder>, or --image1, --image2 and "
+                                 "--homography");
+    if (!onePair && data.empty())
+        throw std::runtime_error("--data=<folder> is required for --dataset=" + dataset + ": " +
+                                 (dataset == "yorkurban" ? "YorkUrban-LineSegment (images/, gt/, list.txt)"
+                                                         : "a sequence (image_l/, cam0/data/ or images)"));
+    if (!data.empty() && !utils::fs::isDirectory(data))
+        throw std::runtime_error("--data=" + data + ": no such folder");
+    checkOutputFolder("csv", csv);
+    checkOutputFolder("chart", chartPrefix);
+
+    const FileStorage params = openParamsFile(args.text("params"));
+    std::vector<LineMethod> methods;
+    for (const std::string& name : splitList(args.text("methods")))
+        methods.push_back(makeLineMethod(name, params.isOpened() && name == "lsdadvance" ? params.root() : FileNode()));
+    if (methods.empty())
+        throw std::runtime_error("--methods is empty; known: " + std::string(lineMethodNames()));
+
+    Table table;
+    std::string runInfo;  // the charts' subtitle
+    size_t skipped = 0;   // unreadable image files left out
+    if (dataset == "yorkurban")
+    {
+        std::vector<LabelledImage> all = loadYorkUrban(data), images;
+        for (size_t k = 0; k < all.size(); k++)
+            if ((subset == "all" || (subset == "even") == (k % 2 == 0)) && readable(all[k].imagePath, skipped))
+                images.push_back(all[k]);
+        if (images.empty())
+            throw std::runtime_error("no readable image in " + data);
+        std::cout << "YorkUrban: " << images.size() << " images (" << subset << ") from " << data
+                  << ", structural protocol (1 px, 5 deg, 75% coverage, +0.5 px), " << getNumThreads()
+                  << " thread(s), median of " << repeats << " run(s) per image"
+                  << (skipped ? format(", %zu unreadable skipped", skipped) : std::string()) << "\n\n";
+        runInfo = format("YorkUrban, %zu images (%s), %d thread(s)", images.size(), subset.c_str(), getNumThreads());
+        table = benchmarkYorkUrban(methods, images, repeats, longLength);
+    }
+    else if (dataset == "sequence")
+    {
+        const SequenceData all = loadSequence(data);
+        SequenceData sequence = all;
+        sequence.imagePaths.clear();
+        sequence.poses.clear();
+        for (size_t k = 0; k < all.imagePaths.size(); k++)
+            if (readable(all.imagePaths[k], skipped))
+            {
+                sequence.imagePaths.push_back(all.imagePaths[k]);
+                if (k < all.poses.size())
+                    sequence.poses.push_back(all.poses[k]);
+            }
+        if (sequence.imagePaths.empty())
+            throw std::runtime_error("no readable frame in " + data);
+        std::cout << "Sequence: " << sequence.imagePaths.size() << " frames from " << data << ", "
+                  << getNumThreads() << " thread(s), long = " << longLength << " px"
+                  << (skipped ? format(", %zu unreadable skipped", skipped) : std::string()) << "\n\n";
+        runInfo = format("%zu frames of %s, %d thread(s)", sequence.imagePaths.size(), data.c_str(), getNumThreads());
+        table = benchmarkSequence(methods, sequence, longLength, matching);
+    }
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    else
+    {
+        std::vector<HomographyPair> pairs;
+        if (!onePair)
+        {
+            for (const HomographyPair& pair : loadHomographyPairs(data))
+                if (readable(pair.image1Path, skipped) && readable(pair.image2Path, skipped))
+                    pairs.push_back(pair);
+        }
+        else
+        {
+            HomographyPair pair;
+            pair.H = readHomography(samples::findFile(args.text("homography"), true, true));
+            pair.image1Path = samples::findFile(args.text("image1"), true, true);
+            pair.image2Path = samples::findFile(args.text("image2"), true, true);
+            for (const String& path : { pair.image1Path, pair.image2Path })
+                if (readGrayImage(path).empty())
+                    throw std::runtime_error("cannot read " + path + " as an image");
+            pairs.push_back(pair);
+        }
+        if (pairs.empty())
+            throw std::runtime_error("no readable image pair in " + data);
+        std::cout << "Homography pairs: " << pairs.size() << " from " << (data.empty() ? pairs[0].image1Path : data)
+                  << ", LBD, mutual nearest neighbours with Hamming distance <= " << matching.params.maxHamming
+                  << ", correct within 3 px (doc/matching.md), " << getNumThreads() << " thread(s)"
+                  << (skipped ? format(", %zu unreadable file(s) skipped", skipped) : std::string()) << "\n\n";
+        runInfo = format("%zu homography pair(s), %d thread(s)", pairs.size(), getNumThreads());
+        table = benchmarkHomography(methods, pairs, matching, repeats);
+    }
+#endif
+    table.print(std::cout);
+    if (!csv.empty())
+        table.writeCsv(csv);
+    if (!chartPrefix.empty())
+        for (const std::string& file : writeCharts(table, chartPrefix, runInfo, longLength))
+            std::cerr << "wrote " << file << "\n";
+    return skipped == 0 ? 0 : kExitSkipped;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -485,110 +617,20 @@ int main(int argc, char** argv)
         "{image1   |            | homography without --data: the first image of one pair (OpenCV sample names are found) }"
         "{image2   |            | homography without --data: the second image }"
         "{homography |          | homography without --data: 3x3 matrix file from image1 to image2 (text, or OpenCV XML) }"
-        "{max-hamming | 30      | LBD matching: largest Hamming distance of a kept mutual nearest neighbour }"
+        "{max-hamming | 30      | LBD matching: largest Hamming distance of a kept mutual nearest neighbour, 0 to 256 }"
         "{no-match |            | sequence: skip the LBD matching columns }"
-        "{top      | 0          | LBD matching: each method matches only its N longest segments per image (0: all) }"
+        "{top      | 0          | LBD matching: each method matches only its N longest segments per image (0: all), >= 0 }"
         "{methods  | lsd,fld,fld_merge,edlines,plvins,lsdadvance | comma-separated methods }"
         "{params   |            | YAML/XML of LSDAdvance parameters (write() or save()) for the lsdadvance method }"
         "{subset   | all        | yorkurban images to use: all, even or odd (by index in list.txt) }"
-        "{repeats  | 1          | detections per image for the time (median) }"
-        "{threads  | 1          | cv::setNumThreads for the whole run (times in the tables are one core by default) }"
-        "{long     | 60         | length in pixels from which a segment is long }"
+        "{repeats  | 1          | detections per image for the time (median), >= 1 }"
+        "{threads  | 1          | cv::setNumThreads for the whole run, 1 to 1024 (times in the tables are one core by default) }"
+        "{long     | 60         | length in pixels from which a segment is long, > 0 }"
         "{csv      |            | also write the table to this CSV file }"
         "{chart    |            | also write the table as SVG bar charts <chart>_time.svg, <chart>_f.svg and "
                                   "<chart>_long.svg (those of the dataset's columns) }";
-    CommandLineParser parser(argc, argv, keys);
-    parser.about("LSDAdvance benchmark: " + std::string(lineMethodNames()));
-    if (parser.has("help") || (!parser.has("data") && !parser.has("image1")))
-    {
-        parser.printMessage();
-        return parser.has("help") ? 0 : 1;
-    }
-    const std::string dataset = parser.get<std::string>("dataset");
-    const String data = parser.get<String>("data");
-    const std::string subset = parser.get<std::string>("subset");
-    const String paramsPath = parser.get<String>("params");
-    const int repeats = std::max(1, parser.get<int>("repeats"));
-    const double longLength = parser.get<double>("long");
-    const String csv = parser.get<String>("csv");
-    const String chartPrefix = parser.get<String>("chart");
-    LineMatchOptions matching;
-#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-    matching.enabled = !parser.has("no-match");
-    matching.params.maxHamming = parser.get<int>("max-hamming");
-    matching.top = parser.get<int>("top");
-#endif
-    setNumThreads(parser.get<int>("threads"));
-    if (!parser.check())
-    {
-        parser.printErrors();
-        return 1;
-    }
-
-    FileStorage params;
-    if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))
-    {
-        std::cerr << "Cannot open " << paramsPath << std::endl;
-        return 1;
-    }
-    std::vector<LineMethod> methods;
-    for (const std::string& name : splitList(parser.get<std::string>("methods")))
-        methods.push_back(makeLineMethod(name, params.isOpened() && name == "lsdadvance" ? params.root() : FileNode()));
-
-    Table table;
-    std::string runInfo;  // the charts' subtitle
-    if (dataset == "yorkurban")
-    {
-        std::vector<LabelledImage> all = loadYorkUrban(data), images;
-        for (size_t k = 0; k < all.size(); k++)
-            if (subset == "all" || (subset == "even") == (k % 2 == 0))
-                images.push_back(all[k]);
-        std::cout << "YorkUrban: " << images.size() << " images (" << subset << ") from " << data
-                  << ", structural protocol (1 px, 5 deg, 75% coverage, +0.5 px), " << getNumThreads()
-                  << " thread(s), median of " << repeats << " run(s) per image\n\n";
-        runInfo = format("YorkUrban, %zu images (%s), %d thread(s)", images.size(), subset.c_str(), getNumThreads());
-        table = benchmarkYorkUrban(methods, images, repeats, longLength);
-    }
-    else if (dataset == "sequence")
-    {
-        const SequenceData sequence = loadSequence(data);
-        std::cout << "Sequence: " << sequence.imagePaths.size() << " frames from " << data << ", "
-                  << getNumThreads() << " thread(s), long = " << longLength << " px\n\n";
-        runInfo = format("%zu frames of %s, %d thread(s)", sequence.imagePaths.size(), data.c_str(), getNumThreads());
-        table = benchmarkSequence(methods, sequence, longLength, matching);
-    }
-#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-    else if (dataset == "homography")
-    {
-        std::vector<HomographyPair> pairs;
-        if (!data.empty())
-            pairs = loadHomographyPairs(data);
-        else
-        {
-            HomographyPair pair;
-            pair.image1Path = samples::findFile(parser.get<String>("image1"), true, true);
-            pair.image2Path = samples::findFile(parser.get<String>("image2"), true, true);
-            pair.H = readHomography(samples::findFile(parser.get<String>("homography"), true, true));
-            pairs.push_back(pair);
-        }
-        std::cout << "Homography pairs: " << pairs.size() << " from " << (data.empty() ? pairs[0].image1Path : data)
-                  << ", LBD, mutual nearest neighbours with Hamming distance <= " << matching.params.maxHamming
-                  << ", correct within 3 px (doc/matching.md), " << getNumThreads() << " thread(s)\n\n";
-        runInfo = format("%zu homography pair(s), %d thread(s)", pairs.size(), getNumThreads());
-        table = benchmarkHomography(methods, pairs, matching, repeats);
-    }
-#endif
-    else
-    {
-        std::cerr << "Unknown dataset '" << dataset << "' (yorkurban, sequence, or homography when line_descriptor is built)"
-                  << std::endl;
-        return 1;
-    }
-    table.print(std::cout);
-    if (!csv.empty())
-        table.writeCsv(csv);
-    if (!chartPrefix.empty())
-        for (const std::string& file : writeCharts(table, chartPrefix, runInfo, longLength))
-            std::cerr << "wrote " << file << "\n";
-    return 0;
+    const String about = "LSDAdvance benchmark, e.g. lsd_advance_benchmark --data=<YorkUrban folder>. Methods: " +
+                         std::string(lineMethodNames()) +
+                         ". Exit status: 0, 1 on an error, 2 when unreadable image files were left out.";
+    return runSample(argc, argv, keys, about, { "no-match" }, {}, run);
 }

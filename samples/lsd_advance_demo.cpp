@@ -6,6 +6,8 @@
 // folder), prints segments per image, the share of long segments and the median time of each,
 // and writes both results for the (first) image side by side.
 
+#include "command_line.hpp"
+#include "frame_source.hpp"
 #include "line_methods.hpp"
 
 #include <opencv2/core/utility.hpp>
@@ -51,59 +53,28 @@ Mat panel(const Ptr<LineSegmentDetector>& drawer, const Mat& gray, const std::ve
     return canvas;
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+int run(const CommandLine& args)
 {
-    const String keys =
-        "{help h   |                      | print this help }"
-        "{image i  | building.jpg         | input image (found with cv::samples::findFile), or a folder of images }"
-        "{output o | lsd_advance_demo.png | side-by-side picture of the (first) image: LSD left, LSDAdvance right }"
-        "{params p |                      | optional YAML/XML file of LSDAdvance parameters saved with write() or save() }"
-        "{repeats  | 11                   | detections per method and image; the median time is used }"
-        "{long     | 60                   | length in pixels from which a segment counts as long }";
-    CommandLineParser parser(argc, argv, keys);
-    parser.about("LSDAdvance demo: fewer, longer line segments than LSD, side by side, with the time of each.");
-    if (parser.has("help"))
-    {
-        parser.printMessage();
-        return 0;
-    }
-    const String input = parser.get<String>("image");
-    const String outputPath = parser.get<String>("output");
-    const String paramsPath = parser.get<String>("params");
-    const int repeats = std::max(1, parser.get<int>("repeats"));
-    const double longLength = parser.get<double>("long");
-    if (!parser.check())
-    {
-        parser.printErrors();
-        return 1;
-    }
-
-    // A folder is read like a sequence folder (its images in name order), one image per file.
-    const std::vector<String> paths = utils::fs::isDirectory(input) ? ximgproc::line_evaluation::loadSequence(input).imagePaths
-                                                                   : std::vector<String>(1, samples::findFile(input, true, true));
-
-    FileStorage params;
-    if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))
-    {
-        std::cerr << "Cannot open " << paramsPath << std::endl;
-        return 1;
-    }
+    const String input = args.text("image");
+    const String outputPath = args.text("output");
+    const int repeats = args.integer("repeats", 1);
+    const double longLength = args.number("long", 0, kUnbounded, true);
+    checkOutputFolder("output", outputPath);
+    if (!haveImageWriter(outputPath))
+        throw std::runtime_error("--output=" + outputPath + ": no image format for this file name (use .png or .jpg)");
+    const FileStorage params = openParamsFile(args.text("params"));
     const LineMethod lsd = makeLineMethod("lsd");
     const LineMethod advance = makeLineMethod("lsdadvance", params.isOpened() ? params.root() : FileNode());
     Ptr<LineSegmentDetector> drawer = createLineSegmentDetector();
 
+    // An image, the images of a folder (in name order) or the frames of a video, each on its own.
+    FrameSource source(input, "demo");
     Totals lsdTotals, advanceTotals;
     std::vector<double> ratios;
-    for (size_t k = 0; k < paths.size(); k++)
+    Mat gray;
+    std::string stem;
+    for (size_t k = 0; source.next(gray, stem); k++)
     {
-        const Mat gray = imread(paths[k], IMREAD_GRAYSCALE);
-        if (gray.empty())
-        {
-            std::cerr << "Cannot read " << paths[k] << std::endl;
-            return 1;
-        }
         // Every image is independent, not the next frame of a sequence.
         std::vector<Vec4f> lsdLines, advanceLines;
         const double lsdMs = timedDetect(lsd, gray, repeats, lsdLines, true);
@@ -119,20 +90,37 @@ int main(int argc, char** argv)
                     panel(drawer, gray, advanceLines, format("LSDAdvance: %zu segments", advanceLines.size())),
                     sideBySide);
             if (!imwrite(outputPath, sideBySide))
-            {
-                std::cerr << "Cannot write " << outputPath << std::endl;
-                return 1;
-            }
+                throw std::runtime_error("cannot write " + outputPath);
         }
     }
+    if (ratios.empty())
+        throw std::runtime_error("no frame in " + input);
 
-    std::cout << (paths.size() == 1 ? "image: " + paths[0] : format("images: %zu in %s", paths.size(), input.c_str()))
-              << "\n";
+    const std::string skipped =
+        source.skipped().empty() ? std::string() : format(" (%zu unreadable skipped)", source.skipped().size());
+    std::cout << (source.isSingleImage() ? "image: " + input : format("images: %zu in %s", ratios.size(), input.c_str()))
+              << skipped << "\n";
     std::printf("%-12s %17s %12s %18s\n", "method", "segments / image", "long share", "median ms / image");
-    lsdTotals.print("LSD", paths.size());
-    advanceTotals.print("LSDAdvance", paths.size());
+    lsdTotals.print("LSD", ratios.size());
+    advanceTotals.print("LSDAdvance", ratios.size());
     std::printf("time ratio LSDAdvance / LSD: %.2f (median over images of per-image medians of %d runs)\n",
                 median(ratios), repeats);
     std::cout << "wrote " << outputPath << std::endl;
-    return 0;
+    return source.skipped().empty() ? 0 : kExitSkipped;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const String keys =
+        "{help h   |                      | print this help }"
+        "{image i  | building.jpg         | input image (found with cv::samples::findFile), a folder of images or a video }"
+        "{output o | lsd_advance_demo.png | side-by-side picture of the (first) image: LSD left, LSDAdvance right }"
+        "{params p |                      | optional YAML/XML file of LSDAdvance parameters saved with write() or save() }"
+        "{repeats  | 11                   | detections per method and image, >= 1; the median time is used }"
+        "{long     | 60                   | length in pixels from which a segment counts as long, > 0 }";
+    const String about = "LSDAdvance demo: fewer, longer line segments than LSD, side by side, with the time of each. "
+                         "Exit status: 0, 1 on an error, 2 when unreadable files of a folder were skipped.";
+    return runSample(argc, argv, keys, about, {}, {}, run);
 }

@@ -6,8 +6,10 @@
 // of the methods of line_methods.hpp, optionally writes them (<stem>.txt, x1 y1 x2 y2 per row)
 // and drawn on the image (<stem>.png), and prints segments per image, the share of long
 // segments and the time of the detection. For LSDAdvance it also draws what each stage did
-// (--draw=filter,groups,merge), like the figures of the paper, from getLastStageOutputs().
+// (--draw=filter,groups,merge), like the figures of the paper, from getLastStageOutputs() and
+// getLastSources().
 
+#include "command_line.hpp"
 #include "frame_source.hpp"
 #include "line_methods.hpp"
 
@@ -22,7 +24,6 @@
 #include <cctype>
 #include <cstdio>
 #include <iostream>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -130,20 +131,27 @@ private:
     bool whole_ = true;
 };
 
-// --zoom=x,y,w,h within the image; the whole image when empty.
-Rect zoomRegion(const std::string& zoom, const Size& imageSize)
+// --zoom=x,y,w,h (pixels, width and height >= 1); an empty rectangle when not given.
+Rect parseZoom(const std::string& zoom)
+{
+    Rect r;
+    char tail = 0;
+    if (!zoom.empty() && (std::sscanf(zoom.c_str(), "%d,%d,%d,%d%c", &r.x, &r.y, &r.width, &r.height, &tail) != 4 ||
+                          r.width < 1 || r.height < 1))
+        throw std::runtime_error("--zoom must be x,y,width,height in pixels, width and height >= 1, got '" + zoom + "'");
+    return r;
+}
+
+// The zoom rectangle within the image; the whole image without --zoom.
+Rect zoomRegion(const Rect& zoom, const Size& imageSize)
 {
     const Rect whole(Point(), imageSize);
     if (zoom.empty())
         return whole;
-    Rect r;
-    char tail = 0;
-    if (std::sscanf(zoom.c_str(), "%d,%d,%d,%d%c", &r.x, &r.y, &r.width, &r.height, &tail) != 4)
-        throw std::runtime_error("--zoom must be x,y,width,height in pixels, got " + zoom);
-    if ((r & whole).area() == 0)
-        throw std::runtime_error(format("--zoom=%s does not overlap the %dx%d image", zoom.c_str(), imageSize.width,
-                                        imageSize.height));
-    return r & whole;
+    if ((zoom & whole).area() == 0)
+        throw std::runtime_error(format("--zoom=%d,%d,%d,%d does not overlap the %dx%d image", zoom.x, zoom.y,
+                                        zoom.width, zoom.height, imageSize.width, imageSize.height));
+    return zoom & whole;
 }
 
 // The drawing with a black band above it: a title, then the legend, wrapped to the width.
@@ -187,20 +195,6 @@ Mat withCaption(const Mat& picture, const std::string& title, const std::vector<
     return out;
 }
 
-// The segments' exact coordinates, to tell a segment a stage passed on unchanged from a new one.
-std::set<std::vector<float> > keysOf(const std::vector<Vec4f>& segments)
-{
-    std::set<std::vector<float> > keys;
-    for (const Vec4f& s : segments)
-        keys.insert(std::vector<float>(s.val, s.val + 4));
-    return keys;
-}
-
-bool contains(const std::set<std::vector<float> >& keys, const Vec4f& s)
-{
-    return keys.count(std::vector<float>(s.val, s.val + 4)) > 0;
-}
-
 // Distinct colour number k: hues spaced by the golden angle, bright and saturated.
 Scalar groupColour(int k)
 {
@@ -211,17 +205,20 @@ Scalar groupColour(int k)
     return Scalar(c[0], c[1], c[2]);
 }
 
-// The outputs of the stages of the last detect() and how they were run.
+// The outputs of the stages of the last detect(), the lines it returned with the base segments
+// each was made from, and how the stages were run.
 struct Stages
 {
-    std::vector<Vec4f> base, filtered, merged;
+    std::vector<Vec4f> base, filtered, merged, lines;
     std::vector<int> labels;
+    std::vector<std::vector<int> > sources;
     ximgproc::LSDAdvanceStats stats;
     bool filterFirst = false, filterOn = false, mergeOn = false;
 
-    explicit Stages(const ximgproc::LSDAdvance& detector)
+    Stages(const ximgproc::LSDAdvance& detector, const std::vector<Vec4f>& returned) : lines(returned)
     {
         detector.getLastStageOutputs(base, filtered, labels, merged);
+        detector.getLastSources(sources);
         stats = detector.getLastStats();
         filterFirst = detector.getStageOrder() == ximgproc::LSDAdvance::FILTER_THEN_MERGE;
         filterOn = detector.getLengthFilterMode() != ximgproc::LSDAdvance::LENGTH_FILTER_NONE;
@@ -279,41 +276,41 @@ Mat drawGroups(StageCanvas canvas, const Stages& st)
                                         { kGrey, format("alone: %d", alone) } });
 }
 
-// (c) Stage 3: every fused segment as a wide band with the pieces it was made of drawn thin on
-// top in alternating colours; segments that merging left as they were in grey.
+// (c) Stage 3: every returned line fused from several base segments (getLastSources()) as a wide
+// band with those pieces drawn thin on top in alternating colours; lines of one segment in grey.
 Mat drawMerge(StageCanvas canvas, const Stages& st)
 {
     const int w = canvas.stroke;
-    const std::vector<Vec4f>& input = st.groupingInput();
-    const std::set<std::vector<float> > inputKeys = keysOf(input), outputKeys = keysOf(st.merged);
     int fused = 0, pieces = 0, unchanged = 0;
-    for (const Vec4f& s : st.merged)
-        if (contains(inputKeys, s))
+    for (size_t j = 0; j < st.lines.size(); j++)
+        if (st.sources[j].size() == 1)
         {
-            canvas.segment(s, kGrey, w);
+            canvas.segment(st.lines[j], kGrey, w);
             unchanged++;
         }
     Mat bands = canvas.image.clone();
-    for (const Vec4f& s : st.merged)
-        if (!contains(inputKeys, s))
+    for (size_t j = 0; j < st.lines.size(); j++)
+        if (st.sources[j].size() > 1)
         {
-            canvas.segmentOn(bands, s, kFused, 4 * w + 3);
+            canvas.segmentOn(bands, st.lines[j], kFused, 4 * w + 3);
             fused++;
         }
     addWeighted(bands, 0.6, canvas.image, 0.4, 0, canvas.image);
-    for (const Vec4f& s : input)
-        if (!contains(outputKeys, s))
-        {
-            const Scalar& c = pieces % 2 ? kPieceB : kPieceA;
-            canvas.segment(s, c, w);
-            canvas.endpoints(s, c);
-            pieces++;
-        }
-    const std::string title = format("Stage 3, merging: %zu segments in, %zu out%s%s", input.size(), st.merged.size(),
+    for (const std::vector<int>& from : st.sources)
+        if (from.size() > 1)
+            for (int i : from)
+            {
+                const Scalar& c = pieces % 2 ? kPieceB : kPieceA;
+                canvas.segment(st.base[i], c, w);
+                canvas.endpoints(st.base[i], c);
+                pieces++;
+            }
+    const std::string title = format("Stage 3, merging: %zu segments in, %zu out; the %zu lines returned%s%s",
+                                     st.groupingInput().size(), st.merged.size(), st.lines.size(),
                                      st.mergeOn ? "" : " - merging off", canvas.shownPart().c_str());
-    return withCaption(canvas.image, title, { { kFused, format("fused segments: %d", fused) },
-                                        { kPieceA, format("pieces they were fused from (orange and pink in turn): %d", pieces) },
-                                        { kGrey, format("unchanged: %d", unchanged) } });
+    return withCaption(canvas.image, title, { { kFused, format("fused lines: %d", fused) },
+                                        { kPieceA, format("base segments they were fused from (orange and pink in turn): %d", pieces) },
+                                        { kGrey, format("lines of one segment: %d", unchanged) } });
 }
 
 void writeImage(const std::string& path, const Mat& image)
@@ -336,10 +333,13 @@ struct Summary
         ms.push_back(detectMs);
     }
 
-    void print(const std::string& method, double longLength) const
+    void print(const std::string& method, double longLength, size_t skipped) const
     {
         std::printf("method:            %s\n", method.c_str());
-        std::printf("images:            %zu\n", images);
+        if (skipped > 0)
+            std::printf("images:            %zu (%zu unreadable file(s) skipped)\n", images, skipped);
+        else
+            std::printf("images:            %zu\n", images);
         std::printf("segments / image:  %.1f\n", segments / (double)images);
         std::printf("long share:        %.3f (>= %g px, over all segments)\n",
                     segments > 0 ? longSegments / segments : 0.0, longLength);
@@ -347,39 +347,27 @@ struct Summary
     }
 };
 
-int run(const CommandLineParser& parser)
+int run(const CommandLine& args)
 {
-    const String input = parser.get<String>("input");
-    const String output = parser.get<String>("output");
-    const String paramsPath = parser.get<String>("params");
-    const bool sequence = parser.has("sequence"), writeTxt = !parser.has("no-segments");
-    const Drawings draw = parseDrawings(parser.has("draw") ? parser.get<std::string>("draw") : std::string());
-    const std::string extension = parser.get<std::string>("ext");
-    const std::string zoom = parser.get<std::string>("zoom");
-    const double longLength = parser.get<double>("long");
-    if (!parser.check())
-    {
-        parser.printErrors();
-        return 1;
-    }
+    const String input = args.text("input");
+    const String output = args.text("output");
+    const bool sequence = args.has("sequence"), writeTxt = !args.has("no-segments");
+    const Drawings draw = parseDrawings(args.has("draw") ? args.text("draw") : std::string());
+    const std::string extension = args.oneOf("ext", { "png", "jpg" });
+    const Rect zoom = parseZoom(args.text("zoom"));
+    const double longLength = args.number("long", 0, kUnbounded, true);
     if (draw.any() && output.empty())
-        throw std::runtime_error("--draw needs --output");
-    if (extension != "png" && extension != "jpg")
-        throw std::runtime_error("--ext must be png or jpg, got " + extension);
+        throw std::runtime_error("--draw needs --output=<folder>");
 
-    FileStorage params;
-    if (!paramsPath.empty() && !params.open(paramsPath, FileStorage::READ))
-        throw std::runtime_error("cannot open " + paramsPath);
-    const LineMethod method = makeLineMethod(parser.get<std::string>("method"),
-                                             params.isOpened() ? params.root() : FileNode());
+    const FileStorage params = openParamsFile(args.text("params"));
+    const LineMethod method = makeLineMethod(args.text("method"), params.isOpened() ? params.root() : FileNode());
     if (draw.ofStages() && !method.lsdAdvance)
         throw std::runtime_error("--draw=filter, groups or merge needs an LSDAdvance method, not " + method.name);
-    FrameSource source(input);
+    FrameSource source(input, "detect");
     if (!output.empty() && !utils::fs::createDirectories(output))
         throw std::runtime_error("cannot create the output folder " + output);
 
-    const Ptr<LineSegmentDetector> drawer = createLineSegmentDetector();
-    const size_t total = source.count();
+    const Ptr<ximgproc::LSDAdvance> drawer = ximgproc::createLSDAdvance();
     Summary summary;
     Mat gray;
     std::string stem;
@@ -400,14 +388,13 @@ int run(const CommandLineParser& parser)
             ximgproc::line_evaluation::writeSegments(utils::fs::join(output, stem + ".txt"), lines);
         if (draw.lines)
         {
-            Mat canvas;
-            cvtColor(gray, canvas, COLOR_GRAY2BGR);
+            Mat canvas = gray.clone();
             drawer->drawSegments(canvas, lines);
             writeImage(utils::fs::join(output, stem + "." + extension), canvas);
         }
         if (draw.ofStages())
         {
-            const Stages stages(*method.lsdAdvance);
+            const Stages stages(*method.lsdAdvance, lines);
             const StageCanvas canvas(gray, zoomRegion(zoom, gray.size()));
             if (draw.filter)
                 writeImage(utils::fs::join(output, stem + "_filter." + extension), drawFilter(canvas, stages));
@@ -416,20 +403,11 @@ int run(const CommandLineParser& parser)
             if (draw.merge)
                 writeImage(utils::fs::join(output, stem + "_merge." + extension), drawMerge(canvas, stages));
         }
-        if (!source.isSingleImage())
-        {
-            std::cerr << "\r[detect] " << summary.images;
-            if (total > 0)
-                std::cerr << "/" << total;
-            std::cerr << std::flush;
-        }
     }
-    if (!source.isSingleImage())
-        std::cerr << "\n";
     if (summary.images == 0)
         throw std::runtime_error("no frame in " + input);
 
-    summary.print(method.name, longLength);
+    summary.print(method.name, longLength, source.skipped().size());
     if (!output.empty())
     {
         if (writeTxt)
@@ -438,7 +416,7 @@ int run(const CommandLineParser& parser)
         else
             std::printf("wrote the drawings of %zu image(s) to %s\n", summary.images, output.c_str());
     }
-    return 0;
+    return source.skipped().empty() ? 0 : kExitSkipped;
 }
 
 } // namespace
@@ -458,17 +436,12 @@ int main(int argc, char** argv)
                                  "the merge groups in colours), merge (<stem>_merge.png: fused segments and their pieces); "
                                  "stages = filter,groups,merge }"
         "{ext      | png        | file type of the drawings: png or jpg }"
-        "{zoom     |            | the filter, groups and merge drawings show only this region x,y,width,height (px) "
-                                 "of the image, enlarged to about 900 px wide }"
+        "{zoom     |            | the filter, groups and merge drawings show only this region x,y,width,height (px, "
+                                 "width and height >= 1, overlapping the image) of the image, enlarged to about 900 px wide }"
         "{no-segments |         | with --output, write only the drawings, not <stem>.txt }"
         "{params p |            | YAML/XML of LSDAdvance parameters saved with write(), for the lsdadvance method }"
-        "{long     | 60         | length in pixels from which a segment counts as long }";
-    CommandLineParser parser(argc, argv, keys);
-    parser.about("Detects line segments with LSDAdvance (or another method) and writes them to text files.");
-    if (parser.has("help"))
-    {
-        parser.printMessage();
-        return 0;
-    }
-    return runReportingErrors([&parser] { return run(parser); });
+        "{long     | 60         | length in pixels from which a segment counts as long, > 0 }";
+    const String about = "Detects line segments with LSDAdvance (or another method) and writes them to text files. "
+                         "Exit status: 0, 1 on an error, 2 when unreadable files of a folder were skipped.";
+    return runSample(argc, argv, keys, about, { "sequence", "no-segments" }, { "draw" }, run);
 }

@@ -9,7 +9,11 @@
 // Base segments are detected once per image and set-up; LSDAdvance::processSegments runs the
 // other stages, so the whole grid takes a few minutes.
 
+#include "command_line.hpp"
+#include "frame_source.hpp"
+
 #include <opencv2/core/utility.hpp>
+#include <opencv2/core/utils/filesystem.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/lsd_advance.hpp>
@@ -106,41 +110,38 @@ void printRow(const Setting& s, const Score& tune, const Score* check)
     std::printf("\n");
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+int run(const CommandLine& args)
 {
-    const String keys =
-        "{help h |      | print this help }"
-        "{data   |      | YorkUrban folder (images/, gt/, list.txt) }"
-        "{tune   | even | half to tune on: even or odd images of list.txt; the other half checks }"
-        "{top    | 15   | rows of the sorted grid to print }";
-    CommandLineParser parser(argc, argv, keys);
-    if (parser.has("help") || !parser.has("data"))
-    {
-        parser.printMessage();
-        return parser.has("help") ? 0 : 1;
-    }
-    const String data = parser.get<String>("data");
-    const bool tuneEven = parser.get<String>("tune") == "even";
-    const int top = parser.get<int>("top");
+    const String data = args.text("data");
+    const bool tuneEven = args.oneOf("tune", { "even", "odd" }) == "even";
+    const int top = args.integer("top", 1);
+    if (!utils::fs::isDirectory(data))
+        throw std::runtime_error("--data=" + data + ": no such folder");
     setNumThreads(1);
 
     const std::vector<LabelledImage> images = loadYorkUrban(data);
+    // The halves by index in list.txt, without the images OpenCV cannot read.
     std::vector<int> tuneSet, checkSet;
-    for (int k = 0; k < (int)images.size(); k++)
-        ((k % 2 == 0) == tuneEven ? tuneSet : checkSet).push_back(k);
-
+    size_t skipped = 0;
     BaseSegments base(sizeof(kBases) / sizeof(kBases[0]), std::vector<std::vector<Vec4f> >(images.size()));
     for (size_t k = 0; k < images.size(); k++)
     {
         std::cerr << "\r[sweep] base segments " << k + 1 << "/" << images.size() << std::flush;
-        const Mat gray = imread(images[k].imagePath, IMREAD_GRAYSCALE);
-        CV_Assert(!gray.empty());
+        const Mat gray = readGrayImage(images[k].imagePath);
+        if (gray.empty())
+        {
+            std::cerr << "\n";
+            reportSkipped(images[k].imagePath);
+            skipped++;
+            continue;
+        }
+        ((k % 2 == 0) == tuneEven ? tuneSet : checkSet).push_back((int)k);
         for (size_t b = 0; b < base.size(); b++)
             createLineSegmentDetector(kBases[b].refine, kBases[b].scale)->detect(gray, base[b][k]);
     }
     std::cerr << "\n";
+    if (tuneSet.empty() || checkSet.empty())
+        throw std::runtime_error("the sweep needs readable images in both halves of " + data);
 
     std::vector<std::pair<Score, Setting> > results;
     for (int b = 0; b < (int)base.size(); b++)
@@ -203,5 +204,21 @@ int main(int argc, char** argv)
         std::printf("- %s alone: F %.3f / %.3f\n", kBases[b].name, evaluate(none, base[b], images, tuneSet).f,
                     evaluate(none, base[b], images, checkSet).f);
     }
-    return 0;
+    if (skipped > 0)
+        std::printf("\n%zu unreadable image(s) skipped\n", skipped);
+    return skipped == 0 ? 0 : kExitSkipped;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const String keys =
+        "{help h |        | print this help }"
+        "{data   | <none> | YorkUrban folder (images/, gt/, list.txt) }"
+        "{tune   | even   | half to tune on: even or odd images of list.txt; the other half checks }"
+        "{top    | 15     | rows of the sorted grid to print, >= 1 }";
+    const String about = "Parameter sweep of LSDAdvance on YorkUrban, e.g. lsd_advance_sweep --data=<YorkUrban folder>. "
+                         "Exit status: 0, 1 on an error, 2 when unreadable images were left out.";
+    return runSample(argc, argv, keys, about, {}, {}, run);
 }

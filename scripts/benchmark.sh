@@ -9,11 +9,14 @@
 # on YorkUrban (all images, then the odd images the defaults were not tuned on), KITTI and
 # EuRoC, then LBD line matching on the HPatches graffiti pairs, OpenCV's graf1/graf3 and KITTI
 # (doc/matching.md). DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository.
-# Builds the samples first when the build directory has none. Takes about 20 minutes.
+# Builds (or brings up to date) the benchmark program first. With ELSED's sources beside the
+# repository (../shared/peers/elsed) or in LSD_ADVANCE_ELSED_DIR, ELSED is built as an optional
+# peer and measured in every table. Takes about 20 minutes.
 #
 # Environment:
 #   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)
 #   LSD_ADVANCE_JOBS       parallel build jobs (default 2)
+#   LSD_ADVANCE_ELSED_DIR  ELSED's sources (see scripts/elsed_peer.sh; set it empty to leave ELSED out)
 set -euo pipefail
 
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,17 +25,22 @@ JOBS="${LSD_ADVANCE_JOBS:-2}"
 DATA="${1:-${LSD_ADVANCE_DATA_DIR:-$REPO/../shared/data}}"
 [ -d "$DATA/yorkurban" ] || { echo "ERROR: no yorkurban/ in $DATA" >&2; exit 1; }
 
-if [ ! -x "$BUILD/lsd_advance_benchmark" ]; then
-  bash "$REPO/scripts/install_deps.sh"
-  [ -f "$BUILD/CMakeCache.txt" ] || cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTS=OFF
-  cmake --build "$BUILD" -j"$JOBS" --target lsd_advance_benchmark
+[ -x "$BUILD/lsd_advance_benchmark" ] || bash "$REPO/scripts/install_deps.sh"
+PEER_ARG="$(bash "$REPO/scripts/elsed_peer.sh")"
+if [ -f "$BUILD/CMakeCache.txt" ]; then
+  cmake "$BUILD" "$PEER_ARG" >/dev/null   # keeps the build's other options
+else
+  cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTS=OFF "$PEER_ARG"
 fi
+cmake --build "$BUILD" -j"$JOBS" --target lsd_advance_benchmark
 export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
 
 B="$BUILD/lsd_advance_benchmark"
-STILL="lsd,fld,fld_merge,edlines,plvins,lsdadvance_paper,lsdadvance_base,lsdadvance"
-MATCHING="lsd,fld,edlines,lsdadvance_paper,lsdadvance_merge,lsdadvance"
-SEQUENCE="lsd,fld,edlines,lsdadvance_paper,lsdadvance_filter,lsdadvance,lsdadvance_interframe,lsdadvance_continuous,lsdadvance_tracking"
+PEER=""
+[ "$PEER_ARG" = "-DLSD_ADVANCE_ELSED_DIR=" ] || PEER=",elsed"
+STILL="lsd,fld,fld_merge,edlines$PEER,plvins,lsdadvance_paper,lsdadvance_base,lsdadvance"
+MATCHING="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_merge,lsdadvance"
+SEQUENCE="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_filter,lsdadvance,lsdadvance_interframe,lsdadvance_continuous,lsdadvance_tracking"
 
 echo "### YorkUrban-LineSegment, all 51 images"
 echo

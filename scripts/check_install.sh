@@ -18,7 +18,13 @@
 #      RPATH, loads the installed library, and detects as many segments as the consumer;
 #   5. consumers see the KeyLine API (HAVE_OPENCV_LINE_DESCRIPTOR) exactly when the library has it;
 #   6. when the build has the Python module (LSD_ADVANCE_PYTHON=ON), the installed `lsd_advance`
-#      imports from <prefix> (PYTHONPATH) and detects as many segments as the consumer.
+#      imports from <prefix> (PYTHONPATH) and detects as many segments as the consumer;
+#   7. README "Another prefix": in a clean shell (env -i, PATH=/usr/local/bin:/usr/bin:/bin) that
+#      sources only <prefix>/bin/setup_vars_lsd_advance.sh, the commands of README and the
+#      tutorial run as written: the sample program by name, pkg-config and a program built with
+#      its flags (no rpath), the consumer configured without -DCMAKE_PREFIX_PATH, `python3`
+#      importing lsd_advance, and the installed Python detect sample; all from <prefix>, all
+#      with the consumer's segment count.
 # Exits non-zero with an `ERROR:` line on the first failure; the temp prefix is removed on success
 # and kept (path printed) on failure.
 #
@@ -103,6 +109,14 @@ out="$("$WORK/consumer/build/lsd_advance_consumer" "$IMAGE")" || fail "lsd_advan
 echo "$out"
 cmake_count="$(count_in "$out" "")"
 if [ -z "$cmake_count" ] || [ "$cmake_count" -le 0 ]; then fail "the CMake consumer reported no segments: '$out'"; fi
+# Bad input: one "Error:" line and exit status 1, as from every sample program.
+for bad in "" "$WORK/no_such_image.jpg"; do
+  rc=0
+  err="$("$WORK/consumer/build/lsd_advance_consumer" ${bad:+"$bad"} 2>&1 >/dev/null)" || rc=$?
+  if [ "$rc" -ne 1 ] || [ "$(wc -l <<<"$err")" -ne 1 ] || [[ "$err" != "Error: "* ]]; then
+    fail "lsd_advance_consumer ${bad:-without an image} should print one 'Error:' line and exit 1, got $rc: $err"
+  fi
+done
 
 step "pkg-config consumer (g++ main.cpp \$(pkg-config --cflags --libs opencv_lsd_advance))"
 export PKG_CONFIG_PATH="$PC_DIR${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
@@ -166,4 +180,53 @@ else
   echo "LSD_ADVANCE_PYTHON is not ON in $BUILD: no Python module to check"
 fi
 
-step "passed: install of $BUILD works for CMake, pkg-config and Python consumers"
+step "README \"Another prefix\": a clean shell with only $PREFIX/bin/setup_vars_lsd_advance.sh sourced"
+BINDIR="$(cache_value CMAKE_INSTALL_BINDIR)"
+WITH_SAMPLES="$(cache_value BUILD_EXAMPLES)"
+WITH_PYTHON="$(cache_value LSD_ADVANCE_PYTHON)"
+SETUP="$PREFIX/$BINDIR/setup_vars_lsd_advance.sh"
+[ -f "$SETUP" ] || fail "$SETUP is not installed"
+mkdir -p "$WORK/home"
+cp -r "$CONSUMER_SRC" "$WORK/home/consumer"
+# The expected values go in as arguments; the shell sees nothing else of this script's environment.
+out="$(cd "$WORK/home" && env -i HOME="$WORK/home" PATH=/usr/local/bin:/usr/bin:/bin \
+  OPENCV_SAMPLES_DATA_PATH="$DATA" bash -euo pipefail -c '
+. "$1"
+prefix=$2; with_samples=$3; with_python=$4
+echo "pkg-config: $(pkg-config --modversion opencv_lsd_advance) from $(pkg-config --variable=prefix opencv_lsd_advance)"
+g++ consumer/main.cpp $(pkg-config --cflags --libs opencv_lsd_advance) -o lsd_count
+image=$OPENCV_SAMPLES_DATA_PATH/building.jpg
+echo "pkg-config program: $(./lsd_count "$image" 2>&1 || true)"
+echo "pkg-config program loads: $(readlink -f "$(ldd ./lsd_count | sed -n "s/.*libopencv_lsd_advance[^ ]* => \([^ ]*\).*/\1/p")")"
+cmake -S consumer -B consumer/build >consumer.log 2>&1 && cmake --build consumer/build >>consumer.log 2>&1 \
+  || { cat consumer.log; exit 1; }
+echo "cmake package: $(sed -n "s/^opencv_lsd_advance_DIR:[A-Z]*=//p" consumer/build/CMakeCache.txt)"
+echo "cmake program: $(consumer/build/lsd_advance_consumer "$image")"
+if [ "$with_samples" = ON ]; then
+  echo "sample program: $(command -v lsd_advance_detect)"
+  lsd_advance_detect --input=building.jpg | sed -n "s/^segments \/ image: */sample segments: /p"
+fi
+if [ "$with_python" = ON ]; then
+  python3 -c "import sys, cv2, lsd_advance; print(\"python module:\", len(lsd_advance.createLSDAdvance().detect(cv2.imread(sys.argv[1], cv2.IMREAD_GRAYSCALE))), lsd_advance.__file__)" "$image"
+  python3 "$prefix/share/opencv4/samples/lsd_advance/python/lsd_advance_detect.py" --input=building.jpg \
+    | sed -n "s/^segments \/ image: */python sample segments: /p"
+fi
+' check_env "$SETUP" "$PREFIX" "$WITH_SAMPLES" "$WITH_PYTHON" 2>&1)" \
+  || fail "the commands of README \"Another prefix\" failed in a clean shell:"$'\n'"$out"
+echo "$out"
+expect_line() { grep -qxF -- "$1" <<<"$out" || fail "expected the line '$1' in a clean shell with $SETUP sourced; got:"$'\n'"$out"; }
+expect_line "pkg-config: $pc_version from $PREFIX"
+expect_line "pkg-config program: $cmake_count line segments in $IMAGE"
+expect_line "pkg-config program loads: $(readlink -f "$LIB")"
+expect_line "cmake package: $PKGDIR"
+expect_line "cmake program: $cmake_count line segments in $IMAGE"
+if [ "$WITH_SAMPLES" = "ON" ]; then
+  expect_line "sample program: $PREFIX/$BINDIR/lsd_advance_detect"
+  expect_line "sample segments: $cmake_count.0"
+fi
+if [ "$WITH_PYTHON" = "ON" ]; then
+  expect_line "python module: $cmake_count $PYDIR/lsd_advance/__init__.py"
+  expect_line "python sample segments: $cmake_count.0"
+fi
+
+step "passed: install of $BUILD works for CMake, pkg-config and Python consumers, and with its environment script"

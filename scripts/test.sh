@@ -8,9 +8,10 @@
 # Installs the Debian dependencies, fetches Debian's OpenCV source package of the installed
 # version (for OpenCV's test framework `ts`, which Debian does not package), builds the module
 # standalone with tests and the Python module, runs every unit test of opencv_test_lsd_advance,
-# the Python tests (scripts/test_python.sh) and a short perf smoke run of opencv_perf_lsd_advance.
-# Ends with the line `tests: N passed, M failed` (C++ and Python tests together); exits non-zero
-# on any failure.
+# the Python tests and the tests of the sample programs (scripts/test_python.sh: python/test and
+# samples/test, the error paths of every C++ and Python sample) and a short perf smoke run of
+# opencv_perf_lsd_advance. Ends with the line `tests: N passed, M failed` (all of them together);
+# exits non-zero on any failure.
 #
 # Environment:
 #   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)
@@ -18,6 +19,9 @@
 #                          ${XDG_CACHE_HOME:-~/.cache}/lsd_advance/opencv-<version>, fetched there)
 #   LSD_ADVANCE_DATA_DIR   test data directory, passed through to the tests
 #   LSD_ADVANCE_JOBS       parallel build jobs (default 2)
+#   LSD_ADVANCE_ELSED_DIR  ELSED's sources for the optional peer in the samples and perf suite
+#                          (default: ../shared/peers/elsed beside the repository when present;
+#                          set it empty to build without; scripts/elsed_peer.sh)
 #   GTEST_FILTER           the usual gtest filter, if a subset is wanted
 set -euo pipefail
 
@@ -38,7 +42,8 @@ echo "OPENCV_SOURCE_DIR=$OPENCV_SOURCE_DIR"
 
 section "configure ($BUILD)"
 cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
-  -DBUILD_TESTS=ON -DBUILD_EXAMPLES=ON -DOPENCV_SOURCE_DIR="$OPENCV_SOURCE_DIR"
+  -DBUILD_TESTS=ON -DBUILD_EXAMPLES=ON -DOPENCV_SOURCE_DIR="$OPENCV_SOURCE_DIR" \
+  "$(bash "$REPO/scripts/elsed_peer.sh")"
 
 section "build"
 cmake --build "$BUILD" -j"$JOBS"
@@ -69,7 +74,7 @@ if [ "$test_rc" -eq 0 ] && [ "$passed" -eq 0 ] && [ "$failed" -eq 0 ]; then
   test_rc=1
 fi
 
-section "Python tests: scripts/test_python.sh"
+section "Python and sample program tests: scripts/test_python.sh"
 PY_LOG="$BUILD/python_tests.log"
 py_rc=0
 bash "$REPO/scripts/test_python.sh" "$BUILD" 2>&1 | tee "$PY_LOG" || py_rc=${PIPESTATUS[0]}
@@ -78,7 +83,7 @@ py_passed="$(sed -nE 's/^python tests: ([0-9]+) passed, ([0-9]+) failed$/\1/p' "
 py_failed="$(sed -nE 's/^python tests: ([0-9]+) passed, ([0-9]+) failed$/\2/p' "$PY_LOG" | tail -n1)"
 py_passed="${py_passed:-0}"; py_failed="${py_failed:-1}"
 if [ "$py_rc" -ne 0 ] && [ "$py_failed" -eq 0 ]; then py_failed=1; fi
-echo "C++ tests: $passed passed, $failed failed; Python tests: $py_passed passed, $py_failed failed"
+echo "C++ tests: $passed passed, $failed failed; Python and sample program tests: $py_passed passed, $py_failed failed"
 passed=$((passed + py_passed))
 failed=$((failed + py_failed))
 

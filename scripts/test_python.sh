@@ -6,13 +6,16 @@
 # Usage: bash scripts/test_python.sh <build dir>
 #
 # Runs the Python tests (python/test, pytest) on the module of a standalone build
-# (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), comparing with the build's C++ samples.
-# Prints `python tests: N passed, M failed` last; exits non-zero when a test fails or errors.
+# (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), comparing with the build's C++ samples,
+# and the tests of the sample programs (samples/test: error paths, folder runs and drawings of
+# the C++ and Python samples). Prints `python tests: N passed, M failed` last (both folders);
+# exits non-zero when a test fails or errors.
 #
 # Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
 # OpenCV build dir of an in-tree build, whose cv2 the caller puts on PYTHONPATH (and
 # LD_LIBRARY_PATH) and whose bin/example_lsd_advance_* samples are compared with;
-# LSD_ADVANCE_DETECT_SAMPLE / LSD_ADVANCE_LBD_SAMPLE override the samples; OPENCV_SAMPLES_DATA_PATH (default: Debian's opencv-doc data);
+# LSD_ADVANCE_SAMPLE_PREFIX (the C++ samples' path without their name), LSD_ADVANCE_DETECT_SAMPLE /
+# LSD_ADVANCE_LBD_SAMPLE override the samples; OPENCV_SAMPLES_DATA_PATH (default: Debian's opencv-doc data);
 # CI=true makes missing data or samples fail instead of skip.
 set -euo pipefail
 
@@ -34,6 +37,7 @@ else
   SAMPLE_PREFIX="$BUILD/bin/example_lsd_advance_"  # an OpenCV build dir
 fi
 export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
+export LSD_ADVANCE_SAMPLE_PREFIX="${LSD_ADVANCE_SAMPLE_PREFIX:-$SAMPLE_PREFIX}"
 export LSD_ADVANCE_DETECT_SAMPLE="${LSD_ADVANCE_DETECT_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_detect}"
 export LSD_ADVANCE_LBD_SAMPLE="${LSD_ADVANCE_LBD_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_lbd_matching}"
 export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in the source tree
@@ -42,7 +46,7 @@ REPORT="$(mktemp)"
 trap 'rm -f "$REPORT"' EXIT
 rc=0
 # -p no:cacheprovider: write nothing into the source tree.
-"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/python/test" || rc=$?
+"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/python/test" "$REPO/samples/test" || rc=$?
 
 read -r passed failed < <("$PYTHON" - "$REPORT" <<'PY'
 import sys

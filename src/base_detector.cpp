@@ -3,9 +3,11 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Stage 0: input conversion (images and segment arrays) and the base detectors: OpenCV's LSD,
-// FastLineDetector and EDLines (EdgeDrawing), used as they are.
+// FastLineDetector and EDLines (EdgeDrawing), used as they are, and the module's own LSD
+// (fast_lsd.cpp).
 
 #include "precomp.hpp"
+#include "fast_lsd.hpp"
 #include "opencv2/ximgproc/edge_drawing.hpp"
 #include "opencv2/ximgproc/fast_line_detector.hpp"
 
@@ -47,6 +49,16 @@ public:
 
 private:
     Ptr<LineSegmentDetector> lsd;
+};
+
+class FastLsdBase CV_FINAL : public BaseSegmentDetector
+{
+public:
+    explicit FastLsdBase(const LSDAdvance::LSDParams& p) : lsd(p) {}
+    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE { lsd.detect(gray, segments); }
+
+private:
+    FastLsd lsd;
 };
 
 // FastLineDetector orients its segments brighter side on the left, like LSD.
@@ -101,6 +113,8 @@ Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParam
         return makePtr<FldBase>(fld);
     case LSDAdvance::BASE_EDLINES:
         return makePtr<EdLinesBase>(edLines);
+    case LSDAdvance::BASE_FAST_LSD:
+        return makePtr<FastLsdBase>(lsd);
     default:
         CV_Error_(Error::StsOutOfRange, ("unknown base detector %d", kind));
     }

@@ -21,7 +21,7 @@
 
 // LSDAdvance::Params: X(type, field, Accessor, default, range, key in files of version 4.6.0 or nullptr)
 #define LSDA_PARAMS(X)                                                                                             \
-    X(int, baseDetector, BaseDetector, LSDAdvance::BASE_LSD, Range::enumOf(kBaseDetectors), nullptr)               \
+    X(int, baseDetector, BaseDetector, LSDAdvance::BASE_FAST_LSD, Range::enumOf(kBaseDetectors), nullptr)               \
     X(int, lengthFilterMode, LengthFilterMode, LSDAdvance::LENGTH_FILTER_ADAPTIVE,                                  \
       Range::enumOf(kLengthFilterModes), nullptr)                                                                    \
     X(int, lengthThresholdRule, LengthThresholdRule, LSDAdvance::LENGTH_THRESHOLD_CAPPED,                           \
@@ -84,7 +84,7 @@ namespace lsda {
 
 // The names files give the values of each enumerated parameter, in value order from 0. Adding
 // a value to one of the public enums means adding its name here.
-const char* const kBaseDetectors[] = { "BASE_LSD", "BASE_FLD", "BASE_EDLINES" };
+const char* const kBaseDetectors[] = { "BASE_LSD", "BASE_FLD", "BASE_EDLINES", "BASE_FAST_LSD" };
 const char* const kLengthFilterModes[] = { "LENGTH_FILTER_NONE", "LENGTH_FILTER_ADAPTIVE", "LENGTH_FILTER_INTERFRAME",
                                            "LENGTH_FILTER_INTERFRAME_CONTINUOUS", "LENGTH_FILTER_COUNT_TRACKING" };
 const char* const kLengthThresholdRules[] = { "LENGTH_THRESHOLD_PAPER", "LENGTH_THRESHOLD_CAPPED" };
@@ -97,7 +97,7 @@ const int kApertureSizes[] = { 3, 5, 7 };
 const char* const kPresets[] = { "PRESET_MOST_ACCURATE", "PRESET_FASTEST", "PRESET_PAPER", "PRESET_SEQUENCE" };
 
 #define LSDA_COUNT_OF(names) (int)(sizeof(names) / sizeof(names[0]))
-static_assert(LSDA_COUNT_OF(kBaseDetectors) == LSDAdvance::BASE_EDLINES + 1, "a name per LSDAdvance::BaseDetector");
+static_assert(LSDA_COUNT_OF(kBaseDetectors) == LSDAdvance::BASE_FAST_LSD + 1, "a name per LSDAdvance::BaseDetector");
 static_assert(LSDA_COUNT_OF(kLengthFilterModes) == LSDAdvance::LENGTH_FILTER_COUNT_TRACKING + 1,
               "a name per LSDAdvance::LengthFilterMode");
 static_assert(LSDA_COUNT_OF(kLengthThresholdRules) == LSDAdvance::LENGTH_THRESHOLD_CAPPED + 1,

@@ -11,11 +11,17 @@
 
 namespace opencv_test { namespace {
 
-const int kBases[] = { LSDAdvance::BASE_LSD, LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES };
+const int kBases[] = { LSDAdvance::BASE_LSD, LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES, LSDAdvance::BASE_FAST_LSD };
 
 const char* baseName(int base)
 {
-    return base == LSDAdvance::BASE_LSD ? "LSD" : (base == LSDAdvance::BASE_FLD ? "FLD" : "EDLines");
+    switch (base)
+    {
+    case LSDAdvance::BASE_LSD: return "LSD";
+    case LSDAdvance::BASE_FLD: return "FLD";
+    case LSDAdvance::BASE_EDLINES: return "EDLines";
+    default: return "fast LSD";
+    }
 }
 
 // A bright rectangle (x 120..519, y 100..379) on a dark, slightly noisy background.
@@ -218,6 +224,9 @@ TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
     };
     expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base >= 0; },
                                         [](const ParameterAccess& p) { return onBase(p.base, false); });
+    // LSDParams serve both LSD bases.
+    expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base == LSDAdvance::BASE_LSD; },
+                                        [](const ParameterAccess&) { return onBase(LSDAdvance::BASE_FAST_LSD, false); });
 }
 
 TEST(LSDAdvance_BaseDetectors, base_parameters_of_another_base_are_unused)
@@ -260,7 +269,7 @@ TEST(LSDAdvance_BaseDetectors, switching_the_base_changes_the_segments_and_back)
     Ptr<LSDAdvance> detector = onBase(LSDAdvance::BASE_LSD, true);
     std::vector<Vec4f> lsd, other, again;
     detector->detect(img, lsd);
-    for (int base : { LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES })
+    for (int base : { LSDAdvance::BASE_FLD, LSDAdvance::BASE_EDLINES, LSDAdvance::BASE_FAST_LSD })
     {
         SCOPED_TRACE(baseName(base));
         detector->setBaseDetector(base);

@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "../src/fast_lsd.hpp"
 
 namespace opencv_test { namespace {
 
@@ -47,11 +48,13 @@ std::vector<Vec4f> detectLsd(const Mat& image)
     return lines;
 }
 
-// OpenCV's LSD with the parameters of a default LSDAdvance: its stage 0.
+// The default base (the module's own LSD) alone, with a default LSDAdvance's parameters: its stage 0.
 std::vector<Vec4f> detectBase(const Mat& image)
 {
+    const Ptr<LSDAdvance> d = createLSDAdvance();
+    EXPECT_EQ(LSDAdvance::BASE_FAST_LSD, d->getBaseDetector());
     std::vector<Vec4f> lines;
-    baseLsdOf(*createLSDAdvance())->detect(image, lines);
+    lsda::FastLsd(d->getLSDParams()).detect(image, lines);
     return lines;
 }
 
@@ -150,6 +153,7 @@ TEST(LSDAdvance_Detect, short_clutter_is_removed_and_long_edges_stay)
     // On OpenCV's default LSD as the base, which sees the 12 px strokes.
     const Mat img = clutterImage(42);
     Ptr<LSDAdvance> detector = createLSDAdvance();
+    detector->setBaseDetector(LSDAdvance::BASE_LSD);
     detector->setLSDParams(createLSDAdvance(LSDAdvance::PRESET_PAPER)->getLSDParams());
     const std::vector<Vec4f> lines = detectLines(detector, img);
     const LSDAdvanceStats stats = detector->getLastStats();

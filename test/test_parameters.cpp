@@ -162,8 +162,9 @@ TEST(LSDAdvance_Parameters, write_read_round_trip_preserves_every_parameter)
 TEST(LSDAdvance_Parameters, write_names_enumerated_values_and_read_takes_names_or_numbers)
 {
     Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::PRESET_SEQUENCE);
+    detector->setBaseDetector(LSDAdvance::BASE_FLD);
     const std::string text = written(*detector);
-    for (const char* line : { "lengthFilterMode: LENGTH_FILTER_COUNT_TRACKING", "baseDetector: BASE_LSD",
+    for (const char* line : { "lengthFilterMode: LENGTH_FILTER_COUNT_TRACKING", "baseDetector: BASE_FLD",
                               "stageOrder: MERGE_THEN_FILTER", "refine: LSD_REFINE_NONE", "EdgeDetectionOperator: PREWITT" })
         EXPECT_NE(std::string::npos, text.find(line)) << line << " not in\n" << text;
 

@@ -75,17 +75,23 @@ void forEachFrameOfBothOrders(const std::function<void(const LSDAdvance&, const 
     }
 }
 
-TEST(LSDAdvance_StageOutputs, base_segments_are_what_the_base_LSD_alone_returns)
+TEST(LSDAdvance_StageOutputs, base_segments_are_what_the_base_alone_returns)
 {
     const Mat& img = buildingImage();
     ASSERT_FALSE(img.empty());
-    Ptr<LSDAdvance> d = createLSDAdvance();
-    std::vector<Vec4f> lines, lsdAlone;
-    d->detect(img, lines);
-    baseLsdOf(*d)->detect(img, lsdAlone);
-    const StageOutputs o = stageOutputsOf(*d);
-    ASSERT_GT(lsdAlone.size(), 100u);
-    EXPECT_TRUE(bitIdentical(lsdAlone, o.base));
+    for (const int base : { LSDAdvance::BASE_FAST_LSD, LSDAdvance::BASE_LSD })
+    {
+        SCOPED_TRACE(base);
+        Ptr<LSDAdvance> d = createLSDAdvance();
+        d->setBaseDetector(base);
+        std::vector<Vec4f> lines, alone;
+        d->detect(img, lines);
+        lsda::createBaseDetector(base, LSDAdvance::LSDParams(), LSDAdvance::FLDParams(), EdgeDrawing::Params())
+            ->detect(img, alone);
+        const StageOutputs o = stageOutputsOf(*d);
+        ASSERT_GT(alone.size(), 100u);
+        EXPECT_TRUE(bitIdentical(alone, o.base));
+    }
 }
 
 TEST(LSDAdvance_StageOutputs, filtered_segments_are_the_length_filter_with_the_reported_minLength)

@@ -178,6 +178,7 @@ def test_detect_equals_the_cpp_sample_output(building, tmp_path):
 
 def test_detect_equals_processSegments_of_opencv_lsd(building):
     detector = api.createLSDAdvance()
+    detector.setBaseDetector(api.LSDAdvance_BASE_LSD)
     p = detector.getLSDParams()
     lsd = cv2.createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance, p.logEps,
                                         p.densityThreshold, p.numBins)

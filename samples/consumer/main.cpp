@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/lsd_advance.hpp>
 
+#include <fstream>
 #include <iostream>
 #include <vector>
 
@@ -16,15 +17,21 @@ int main(int argc, char** argv)
 {
     if (argc != 2)
     {
-        std::cerr << "Usage: " << argv[0] << " <image>" << std::endl;
-        return 2;
+        std::cerr << "Error: give one image, e.g. " << argv[0] << " building.jpg" << std::endl;
+        return 1;
+    }
+    // Checked here: imread would also log a warning of its own about a missing file.
+    if (!std::ifstream(argv[1]))
+    {
+        std::cerr << "Error: cannot open " << argv[1] << std::endl;
+        return 1;
     }
     try
     {
         const cv::Mat image = cv::imread(argv[1], cv::IMREAD_GRAYSCALE);
         if (image.empty())
         {
-            std::cerr << "Cannot read the image " << argv[1] << std::endl;
+            std::cerr << "Error: cannot read " << argv[1] << " as an image" << std::endl;
             return 1;
         }
         cv::Ptr<cv::ximgproc::LSDAdvance> detector = cv::ximgproc::createLSDAdvance();
@@ -34,7 +41,7 @@ int main(int argc, char** argv)
     }
     catch (const cv::Exception& e)
     {
-        std::cerr << e.what() << std::endl;
+        std::cerr << "Error: " << e.err << std::endl;
         return 1;
     }
     return 0;

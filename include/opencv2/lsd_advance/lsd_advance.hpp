@@ -41,8 +41,8 @@ struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
 
 /** @brief Line segment detector that returns fewer, longer segments than LSD (@cite Guan2026).
 
-The segments of a base detector (BaseDetector: OpenCV's LineSegmentDetector @cite Rafael12 by
-default, FastLineDetector @cite Lee14 or EDLines @cite akinlar2011edlines) pass three stages:
+The segments of a base detector (BaseDetector: the LSD algorithm @cite Rafael12 by default,
+FastLineDetector @cite Lee14 or EDLines @cite akinlar2011edlines) pass three stages:
 1. **length filter**: segments shorter than a threshold computed from the mean and standard
    deviation of the frame's segment lengths are dropped (LengthFilterMode, LengthThresholdRule);
 2. **grouping**: segments of the same (or a neighbouring) angle bin whose endpoints are close form
@@ -129,9 +129,12 @@ public:
     left (EDLines' are turned round where needed). */
     enum BaseDetector
     {
-        BASE_LSD = 0,    //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams (default)
-        BASE_FLD = 1,    //!< cv::ximgproc::FastLineDetector with FLDParams
-        BASE_EDLINES = 2 //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
+        BASE_LSD = 0,     //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams
+        BASE_FLD = 1,     //!< cv::ximgproc::FastLineDetector with FLDParams
+        BASE_EDLINES = 2, //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
+        /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: it
+        gives OpenCV's LineSegmentDetector's segments (doc/performance.md). The default. */
+        BASE_FAST_LSD = 3
     };
 
     /** @brief Named configurations for createLSDAdvance() (doc/algorithm.md, "Presets"). */
@@ -149,7 +152,7 @@ public:
     struct CV_EXPORTS_W_SIMPLE Params
     {
         CV_WRAP Params(); //!< the defaults (PRESET_MOST_ACCURATE)
-        CV_PROP_RW int baseDetector;            //!< stage 0, one of BaseDetector. Default BASE_LSD.
+        CV_PROP_RW int baseDetector;            //!< stage 0, one of BaseDetector. Default BASE_FAST_LSD.
         CV_PROP_RW int lengthFilterMode;        //!< stage 1, one of LengthFilterMode. Default LENGTH_FILTER_ADAPTIVE.
         CV_PROP_RW int lengthThresholdRule;     //!< stage 1, one of LengthThresholdRule. Default LENGTH_THRESHOLD_CAPPED.
         CV_PROP_RW double lengthThresholdScale; //!< factor on stage 1's threshold (below 1 keeps shorter segments), in (0, 10]. Default 1.
@@ -168,7 +171,7 @@ public:
     };
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
-    LineSegmentDetector), with the meaning of cv::createLineSegmentDetector's arguments. */
+    LineSegmentDetector) and BASE_FAST_LSD, with the meaning of cv::createLineSegmentDetector's arguments. */
     struct CV_EXPORTS_W_SIMPLE LSDParams
     {
         CV_WRAP LSDParams(); //!< the defaults (OpenCV's LSD uses LSD_REFINE_STD at scale 0.8)
@@ -244,8 +247,8 @@ public:
     CV_WRAP virtual LSDAdvance::Params getParams() const = 0; //!< @brief Returns Params. @return Every field.
     /** @brief Sets Params. @param params Every field, all validated before any changes. */
     CV_WRAP virtual void setParams(const LSDAdvance::Params& params) = 0;
-    CV_WRAP virtual LSDAdvance::LSDParams getLSDParams() const = 0; //!< @brief Returns BASE_LSD's. @return Every field.
-    /** @brief Sets the parameters of BASE_LSD. @param params Every field, all validated first. */
+    CV_WRAP virtual LSDAdvance::LSDParams getLSDParams() const = 0; //!< @brief Returns BASE_LSD's and BASE_FAST_LSD's. @return Every field.
+    /** @brief Sets those of BASE_LSD and BASE_FAST_LSD. @param params Every field, all validated first. */
     CV_WRAP virtual void setLSDParams(const LSDAdvance::LSDParams& params) = 0;
     CV_WRAP virtual LSDAdvance::FLDParams getFLDParams() const = 0; //!< @brief Returns BASE_FLD's. @return Every field.
     /** @brief Sets the parameters of BASE_FLD. @param params Every field, all validated first. */
