@@ -305,7 +305,7 @@ Mat drawMerge(StageCanvas canvas, const Stages& st)
                 canvas.endpoints(st.base[i], c);
                 pieces++;
             }
-    const std::string title = format("Stage 3, merging: %zu segments in, %zu out; the %zu lines returned%s%s",
+    const std::string title = format("Stage 3, merging: %zu segments in, %zu out, %zu returned%s%s",
                                      st.groupingInput().size(), st.merged.size(), st.lines.size(),
                                      st.mergeOn ? "" : " - merging off", canvas.shownPart().c_str());
     return withCaption(canvas.image, title, { { kFused, format("fused lines: %d", fused) },

@@ -471,7 +471,7 @@ def draw_merge(canvas, st):
                 canvas.segment(st.base[i], colour, w)
                 canvas.endpoints(st.base[i], colour)
                 pieces += 1
-    title = "Stage 3, merging: %d segments in, %d out; the %d lines returned%s%s" % (
+    title = "Stage 3, merging: %d segments in, %d out, %d returned%s%s" % (
         len(st.grouping_input()), len(st.merged), len(st.lines), "" if st.merge_on else " - merging off",
         canvas.shown_part())
     return with_caption(canvas.image, title, [
