@@ -187,14 +187,16 @@ int run(const CommandLine& args)
 
     // The defaults, the paper's configuration and the base detectors alone, on both halves.
     std::printf("\nReferences on both halves (tune / check):\n\n");
-    const Setting paper = { 0, LSDAdvance::LENGTH_THRESHOLD_PAPER, LSDAdvance::MERGE_BASELINES, LSDAdvance::FILTER_THEN_MERGE, 10, 0.6, 0.1, 1.5 };
+    // The paper's preset, each image on its own (alpha = 1), on OpenCV's default LSD set-up (its base).
+    Ptr<LSDAdvance> paper = createLSDAdvance(LSDAdvance::PRESET_PAPER);
+    paper->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
     Ptr<LSDAdvance> defaults = createLSDAdvance();
     const int defaultBase = defaults->getLSDParams().refine == LSD_REFINE_NONE ? 1 : 0;
     std::printf("- the defaults (%s base): F %.3f / %.3f\n", kBases[defaultBase].name,
                 evaluate(defaults, base[defaultBase], images, tuneSet).f,
                 evaluate(defaults, base[defaultBase], images, checkSet).f);
-    const Score paperTune = evaluate(detectorFor(paper), base[0], images, tuneSet);
-    const Score paperCheck = evaluate(detectorFor(paper), base[0], images, checkSet);
+    const Score paperTune = evaluate(paper, base[0], images, tuneSet);
+    const Score paperCheck = evaluate(paper, base[0], images, checkSet);
     std::printf("- paper's stages on OpenCV's default LSD: F %.3f / %.3f\n", paperTune.f, paperCheck.f);
     for (size_t b = 0; b < base.size(); b++)
     {
