@@ -260,11 +260,29 @@ std::vector<std::string> writeCharts(const Table& table, const std::string& pref
     return written;
 }
 
+// The time of a method divided by OpenCV LSD's on the same images, the median over the images
+// (the ratio of each image, so that a comparison holds while the machine's speed drifts), when the
+// methods hold OpenCV's LSD; "-" otherwise.
+std::string medianTimeRatio(const std::vector<LineMethod>& methods, const std::vector<std::vector<double> >& ms, size_t m)
+{
+    for (size_t lsd = 0; lsd < methods.size(); lsd++)
+        if (methods[lsd].name == "LSD")
+        {
+            std::vector<double> ratios;
+            for (size_t k = 0; k < ms[m].size(); k++)
+                if (ms[lsd][k] > 0)
+                    ratios.push_back(ms[m][k] / ms[lsd][k]);
+            return ratios.empty() ? std::string("-") : format("%.3f", median(ratios));
+        }
+    return "-";
+}
+
 Table benchmarkYorkUrban(const std::vector<LineMethod>& methods, const std::vector<LabelledImage>& images,
                          int repeats, double longLength)
 {
     Table table;
-    table.header = { "method", "AP", "AR", "F", "segments / image", "long share", "ms / image (median)" };
+    table.header = { "method", "AP", "AR", "F", "segments / image", "long share", "ms / image (median)",
+                     "time / LSD (median)" };
     std::vector<std::vector<double> > precision(methods.size()), recall(methods.size()), ms(methods.size());
     std::vector<double> segments(methods.size(), 0.0), longOnes(methods.size(), 0.0);
     for (size_t k = 0; k < images.size(); k++)
@@ -290,7 +308,7 @@ Table benchmarkYorkUrban(const std::vector<LineMethod>& methods, const std::vect
         table.rows.push_back({ methods[m].name, format("%.3f", ap), format("%.3f", ar), format("%.3f", fScore(ap, ar)),
                                format("%.1f", segments[m] / images.size()),
                                format("%.3f", segments[m] > 0 ? longOnes[m] / segments[m] : 0.0),
-                               format("%.1f", median(ms[m])) });
+                               format("%.1f", median(ms[m])), medianTimeRatio(methods, ms, m) });
     }
     return table;
 }
@@ -357,7 +375,8 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
     const std::vector<String>& frames = sequence.imagePaths;
     Table table;
     table.header = { "method", "segments / frame (mean)", "segments / frame (std)", "long share (mean)",
-                     "long share (std)", "ms / frame (mean)", "ms / frame (std)", "ms / frame (median)" };
+                     "long share (std)", "ms / frame (mean)", "ms / frame (std)", "ms / frame (median)",
+                     "time / LSD (median)" };
     std::vector<std::vector<double> > counts(methods.size()), shares(methods.size()), ms(methods.size());
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     const bool withPoses = !sequence.P0.empty() && !sequence.poses.empty();
@@ -417,7 +436,7 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
         meanStd(ms[m], tm, ts);
         table.rows.push_back({ methods[m].name, format("%.1f", cm), format("%.1f", cs), format("%.3f", sm),
                                format("%.3f", ss), format("%.1f", tm), format("%.1f", ts),
-                               format("%.1f", median(ms[m])) });
+                               format("%.1f", median(ms[m])), medianTimeRatio(methods, ms, m) });
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
         if (!matching.enabled)
             continue;

@@ -15,9 +15,34 @@
 #include <cstdlib>
 #include <new>
 
-// Counts the allocations of this test program, so that a test can count those of a call.
+// Counts the allocations of this test program, so that a test can count those of a call: under
+// AddressSanitizer through its allocation hook (its own operator new stays, with its checks),
+// otherwise by replacing the global operator new.
 static std::atomic<long> g_allocations(0);
 
+#if defined(__SANITIZE_ADDRESS__)
+#define LSDA_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LSDA_TEST_ASAN 1
+#endif
+#endif
+
+#ifdef LSDA_TEST_ASAN
+// The sanitizers' public interface (sanitizer/allocator_interface.h, which GCC does not install).
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, size_t),
+                                                         void (*free_hook)(const volatile void*));
+
+static void countAllocation(const volatile void*, size_t)
+{
+    g_allocations++;
+}
+
+static void ignoreRelease(const volatile void*) {}
+
+// The sanitizers install no hook unless both are given.
+static const int g_hookInstalled = __sanitizer_install_malloc_and_free_hooks(countAllocation, ignoreRelease);
+#else
 void* operator new(std::size_t size)
 {
     g_allocations++;
@@ -37,6 +62,7 @@ void operator delete(void* p) noexcept
 }
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
 #pragma GCC diagnostic pop
+#endif
 #endif
 
 namespace opencv_test { namespace {
@@ -165,15 +191,23 @@ TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_with_standard_refinement_at_scale
     expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.95);
 }
 
-// With LSD_REFINE_ADV both validate segments by their number of false alarms, but OpenCV's
-// LineSegmentDetector keeps nearly every one (its binomial term lacks log(n!)); ours keeps the
-// meaningful ones: fewer segments, nearly all of them OpenCV's too.
-TEST(LSDAdvance_FastLsd, advanced_refinement_keeps_a_subset_of_OpenCV_LSD)
+// With LSD_REFINE_ADV both validate segments by their number of false alarms. OpenCV's
+// LineSegmentDetector before 4.8 keeps nearly every one (its binomial term lacks log(n!), and its
+// rectangle scan misses pixels; fixed by opencv/opencv#23210 in 4.8): ours keeps the meaningful
+// ones, fewer segments, nearly all of them OpenCV's too. From 4.8 on OpenCV validates as
+// published and the two agree (4.10, measured: 97 % of OpenCV's reproduced by ours, 91 % of ours
+// by OpenCV's, which keeps 7 % fewer).
+TEST(LSDAdvance_FastLsd, advanced_refinement_validates_like_OpenCV_LSD)
 {
     const Agreement a = compareWithOpenCV(yorkUrbanImages(5), lsdParams(LSD_REFINE_ADV, 0.8));
     std::cout << "[ INFO ] LSD_REFINE_ADV: OpenCV " << a.opencv << " segments, ours " << a.ours
-              << ", ours reproduced by OpenCV's " << a.ourShare() << std::endl;
+              << ", ours reproduced by OpenCV's " << a.ourShare() << ", OpenCV's by ours " << a.opencvShare()
+              << std::endl;
+#if CV_VERSION_MAJOR == 4 && CV_VERSION_MINOR < 8
     EXPECT_LT(a.ours, a.opencv);
+#else
+    EXPECT_GE(a.opencvShare(), 0.95);
+#endif
     EXPECT_GE(a.ourShare(), 0.9);
 }
 
@@ -249,6 +283,9 @@ TEST(LSDAdvance_FastLsd, allocates_nothing_per_frame_once_warm)
     std::vector<Mat> frames;
     for (int i = 0; i < 4; i++)
         frames.push_back(imread(utils::fs::join(folder, cv::format("image_l/%06d.png", i)), IMREAD_GRAYSCALE));
+#ifdef LSDA_TEST_ASAN
+    ASSERT_NE(0, g_hookInstalled);
+#endif
     const int threads = getNumThreads();
     setNumThreads(1);
     Ptr<LSDAdvance> detector = createLSDAdvance();
