@@ -66,6 +66,7 @@ set(LSDA_PYTHON_PACKAGE_DIR "${CMAKE_BINARY_DIR}/python/lsd_advance")
 # NO_EXTRAS: no link-time optimisation, which costs build time for glue code (measured 49 s -> 29 s).
 pybind11_add_module(lsda_python MODULE NO_EXTRAS "${LSDA_ROOT}/python/lsd_advance_python.cpp")
 target_link_libraries(lsda_python PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
+target_include_directories(lsda_python PRIVATE "${LSDA_ROOT}/src")  # the parameter tables
 target_compile_definitions(lsda_python PRIVATE ${LSDA_MODULE_DEFINITIONS})
 target_compile_options(lsda_python PRIVATE ${LSDA_WARNINGS})
 set_target_properties(lsda_python PROPERTIES

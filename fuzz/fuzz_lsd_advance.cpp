@@ -24,6 +24,7 @@
 
 using namespace cv;
 using namespace cv::ximgproc;
+using namespace cv::ximgproc::line_evaluation;
 
 namespace {
 
@@ -33,21 +34,25 @@ void fail(const char* what, double value = 0)
     std::abort();
 }
 
-// The persisted parameter names, read from what write() produces: new parameters take part
-// without changing this file.
-const std::vector<std::string>& parameterNames()
+// The persisted parameters as (map, key) pairs, map "" for the top level, read from what write()
+// produces: new parameters take part without changing this file.
+const std::vector<std::pair<std::string, std::string> >& parameterKeys()
 {
-    static const std::vector<std::string> names = [] {
+    static const std::vector<std::pair<std::string, std::string> > keys = [] {
         FileStorage out("params.yml", FileStorage::WRITE | FileStorage::MEMORY);
         createLSDAdvance()->write(out);
         const String text = out.releaseAndGetString();
         FileStorage in(text, FileStorage::READ | FileStorage::MEMORY);
-        std::vector<std::string> keys;
+        std::vector<std::pair<std::string, std::string> > found;
         for (const FileNode& node : in.root())
-            keys.push_back(node.name());
-        return keys;
+            if (node.isMap())
+                for (const FileNode& child : node)
+                    found.push_back(std::make_pair(node.name(), child.name()));
+            else
+                found.push_back(std::make_pair(std::string(), node.name()));
+        return found;
     }();
-    return names;
+    return keys;
 }
 
 // A YAML value for a parameter: mostly small numbers near the valid ranges, sometimes special
@@ -60,7 +65,7 @@ std::string fuzzedValue(FuzzedDataProvider& in)
     case 1: return in.ConsumeBool() ? ".inf" : "-.inf";
     case 2: return format("%d", in.ConsumeIntegral<int>());
     case 3: return format("%.17g", in.ConsumeFloatingPoint<double>());
-    case 4: return "\"text\"";
+    case 4: return in.ConsumeBool() ? "\"text\"" : "LENGTH_FILTER_COUNT_TRACKING";
     case 5: return "[ 1, 2 ]";
     case 6: return format("%d", in.ConsumeIntegralInRange<int>(-2, 12));
     default: return format("%.6g", in.ConsumeFloatingPointInRange<double>(-2.0, 120.0));
@@ -114,8 +119,12 @@ Mat fuzzedImage(FuzzedDataProvider& in)
     return view ? full(Rect(pad, pad, cols, rows)) : full;
 }
 
-void checkLines(const std::vector<Vec4f>& lines, const Size& image, const LSDAdvanceStats& stats)
+// clampedKeyLines: the lines are KeyLines' endpoints, which linesToKeyLines clamps as LSDDetector
+// does (and which may then have no length).
+void checkLines(const std::vector<Vec4f>& lines, const Size& image, const LSDAdvance& detector,
+                bool clampedKeyLines = false)
 {
+    const LSDAdvanceStats stats = detector.getLastStats();
     if ((int)lines.size() != stats.outputSegments)
         fail("lines.size() == stats.outputSegments", (double)lines.size());
     if (stats.outputSegments > stats.baseSegments)
@@ -124,25 +133,47 @@ void checkLines(const std::vector<Vec4f>& lines, const Size& image, const LSDAdv
         fail("alpha in [0.8, 1.2]", stats.alpha);
     if (!(std::isfinite(stats.minLength) && stats.minLength >= 0))
         fail("finite minLength >= 0", stats.minLength);
-    // Like LSD's, endpoints may lie outside the image, but never farther than the image's own
-    // extent (a region's rectangle is never wider than the image).
+    // Every segment lies inside the image domain [-0.5, W-0.5] x [-0.5, H-0.5] and has a length.
     for (const Vec4f& l : lines)
+    {
         for (int i = 0; i < 4; i++)
         {
-            const double extent = i % 2 == 0 ? image.width : image.height;
-            if (!std::isfinite(l[i]) || l[i] < -extent - 1 || l[i] > 2 * extent + 1)
-                fail("finite coordinates near the image", l[i]);
+            const double extent = (i % 2 == 0 ? image.width : image.height) - 0.5;
+            if (!std::isfinite(l[i]) || l[i] < -0.5 || l[i] > extent)
+                fail("coordinates inside the image domain", l[i]);
         }
+        if (!clampedKeyLines && l[0] == l[2] && l[1] == l[3])
+            fail("segments of positive length", l[0]);
+    }
+    // Each line has its sources, distinct base segments.
+    std::vector<std::vector<int> > sources;
+    detector.getLastSources(sources);
+    if (sources.size() != lines.size())
+        fail("a list of sources per line", (double)sources.size());
+    std::vector<char> used(stats.baseSegments, 0);
+    for (const std::vector<int>& list : sources)
+    {
+        if (list.empty())
+            fail("every line has a source");
+        for (int i : list)
+        {
+            if (i < 0 || i >= stats.baseSegments || used[i])
+                fail("sources are distinct base segments", i);
+            used[i] = 1;
+        }
+    }
 }
 
 void fuzzDetector(FuzzedDataProvider& in)
 {
     Ptr<LSDAdvance> detector = createLSDAdvance();
-    // Parameters through read(): valid, out of range, non-finite or of the wrong type.
+    // Parameters through read(): valid, out of range, non-finite or of the wrong type, by name
+    // for the enumerated ones.
     std::string yaml = "%YAML:1.0\n---\n";
-    for (const std::string& name : parameterNames())
+    for (const auto& key : parameterKeys())
         if (in.ConsumeIntegralInRange<int>(0, 3) == 0)
-            yaml += name + ": " + fuzzedValue(in) + "\n";
+            yaml += (key.first.empty() ? key.second : key.first + ": { " + key.second) + ": " + fuzzedValue(in) +
+                    (key.first.empty() ? "\n" : " }\n");
     try
     {
         FileStorage fs(yaml, FileStorage::READ | FileStorage::MEMORY);
@@ -182,7 +213,7 @@ void fuzzDetector(FuzzedDataProvider& in)
                 detector->detect(image, lines);
 #endif
             }
-            checkLines(lines, image.size(), detector->getLastStats());
+            checkLines(lines, image.size(), *detector, overload == 2);
         }
         catch (const cv::Exception&)
         {
@@ -206,10 +237,13 @@ void fuzzDetector(FuzzedDataProvider& in)
         }
         segments.push_back(s);
     }
+    // Clipped to a fuzzed image size, or not clipped.
+    const Size imageSize = in.ConsumeBool() ? Size() : Size(in.ConsumeIntegralInRange<int>(1, 300),
+                                                              in.ConsumeIntegralInRange<int>(1, 300));
     try
     {
         std::vector<Vec4f> lines;
-        detector->processSegments(segments, lines);
+        detector->processSegments(segments, lines, imageSize);
         const LSDAdvanceStats stats = detector->getLastStats();
         if (!valid)
             fail("invalid segments were accepted");
@@ -219,6 +253,8 @@ void fuzzDetector(FuzzedDataProvider& in)
             for (int i = 0; i < 4; i++)
                 if (!std::isfinite(l[i]))
                     fail("finite processSegments output", l[i]);
+        if (!imageSize.empty())
+            checkLines(lines, imageSize, *detector);
     }
     catch (const cv::Exception&)
     {

@@ -23,12 +23,12 @@ enum Method
     LSD,                      // OpenCV's LineSegmentDetector, defaults
     FLD,                      // FastLineDetector, defaults
     EDLINES,                  // EdgeDrawing's EDLines, defaults
-    LSDA,                     // LSDAdvance, defaults
+    LSDA,                     // LSDAdvance, defaults (PRESET_MOST_ACCURATE)
     LSDA_BASE_ONLY,           // LSDAdvance's default base (its own LSD), stages off
     LSDA_ON_OPENCV_LSD_FULL,  // LSDAdvance on OpenCV's LSD with the default base's set-up (scale 1, no refinement)
-    LSDA_ON_OPENCV_LSD,       // LSDAdvance on OpenCV's LSD with OpenCV's default set-up
+    LSDA_ON_OPENCV_LSD,       // LSDAdvance on OpenCV's LSD with OpenCV's default set-up (the paper's base)
     LSDA_ON_FLD,              // LSDAdvance on FastLineDetector
-    LSDA_ON_EDLINES,          // LSDAdvance on EDLines
+    LSDA_ON_EDLINES,          // LSDAdvance on EDLines (PRESET_FASTEST)
     LSDA_ON_EDLINES_TUNED,    // LSDAdvance on EDLines, the sweep's best set-up (doc/performance.md)
     ELSED                     // the optional peer ELSED, defaults; a case only when it is built
 };
@@ -71,7 +71,9 @@ DetectFunction makeDetector(int method)
         return [elsed](const Mat& image, std::vector<Vec4f>& lines) { lines = elsed->detect(image); };
     }
 #endif
-    Ptr<LSDAdvance> advance = createLSDAdvance();
+    Ptr<LSDAdvance> advance =
+        createLSDAdvance(method == LSDA_ON_EDLINES || method == LSDA_ON_EDLINES_TUNED ? LSDAdvance::PRESET_FASTEST
+                                                                                     : LSDAdvance::PRESET_MOST_ACCURATE);
     if (method == LSDA_BASE_ONLY)
     {
         advance->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);
@@ -79,22 +81,20 @@ DetectFunction makeDetector(int method)
     }
     else if (method == LSDA_ON_OPENCV_LSD_FULL)
         advance->setBaseDetector(LSDAdvance::BASE_LSD);
-    else if (method == LSDA_ON_OPENCV_LSD)
+    else if (method == LSDA_ON_OPENCV_LSD)  // the paper's base
     {
         advance->setBaseDetector(LSDAdvance::BASE_LSD);
-        advance->setLsdRefine(LSD_REFINE_STD);
-        advance->setLsdScale(0.8);
+        advance->setLSDParams(createLSDAdvance(LSDAdvance::PRESET_PAPER)->getLSDParams());
     }
     else if (method == LSDA_ON_FLD)
         advance->setBaseDetector(LSDAdvance::BASE_FLD);
-    else if (method == LSDA_ON_EDLINES)
-        advance->setBaseDetector(LSDAdvance::BASE_EDLINES);
     else if (method == LSDA_ON_EDLINES_TUNED)
     {
-        advance->setBaseDetector(LSDAdvance::BASE_EDLINES);
-        advance->setEdSigma(0.5);
-        advance->setEdGradientThreshold(30);
-        advance->setLengthThreshold(LSDAdvance::LENGTH_THRESHOLD_PAPER);
+        EdgeDrawing::Params ed = advance->getEDLinesParams();
+        ed.Sigma = 0.5f;
+        ed.GradientThresholdValue = 30;
+        advance->setEDLinesParams(ed);
+        advance->setLengthThresholdRule(LSDAdvance::LENGTH_THRESHOLD_PAPER);
         advance->setMaxPerpendicularOffset(2.0);
     }
     return [advance](const Mat& image, std::vector<Vec4f>& lines) { advance->detect(image, lines); };

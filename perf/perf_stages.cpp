@@ -6,7 +6,7 @@
 // of each stage grows with the number of segments (doc/performance.md).
 
 #include "perf_precomp.hpp"
-#include "../src/stages.hpp"
+#include "../src/segment_merging.hpp"
 
 namespace opencv_test { namespace {
 
@@ -74,10 +74,10 @@ std::vector<Vec4f> oneEdgeInPieces(int n)
 enum Strategy { LONGEST_FIRST, BASELINES };
 CV_ENUM(StrategyType, LONGEST_FIRST, BASELINES)
 
-lsda::MergeParams mergeParams(int strategy)
+LSDAdvance::Params mergeParams(int strategy)
 {
-    lsda::MergeParams p;
-    p.strategy = strategy == BASELINES ? lsda::MergeStrategy::BASELINES : lsda::MergeStrategy::LONGEST_FIRST;
+    LSDAdvance::Params p;
+    p.mergeStrategy = strategy == BASELINES ? LSDAdvance::MERGE_BASELINES : LSDAdvance::MERGE_LONGEST_FIRST;
     return p;
 }
 
@@ -91,7 +91,7 @@ PERF_TEST_P(Stage_Segments, lengthFilter, SEGMENT_COUNTS)
     std::vector<Vec4f> kept;
     TEST_CYCLE()
     {
-        const double minLength = lsda::adaptiveMinLength(segments, 1.0, lsda::LengthThreshold::CAPPED);
+        const double minLength = lsda::adaptiveMinLength(segments, 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED);
         lsda::dropShortSegments(segments, minLength, kept);
     }
     EXPECT_LT(kept.size(), segments.size());
@@ -103,7 +103,7 @@ PERF_TEST_P(Stage_Segments, grouping, SEGMENT_COUNTS)
     const std::vector<Vec4f> segments = recordedSegments(GetParam());
     lsda::SegmentGroups groups;
     lsda::GroupingWorkspace workspace;
-    TEST_CYCLE() lsda::groupSegments(segments, lsda::GroupingParams(), groups, workspace);
+    TEST_CYCLE() lsda::groupSegments(segments, LSDAdvance::Params(), groups, workspace);
     EXPECT_LT(groups.count(), (int)segments.size());
     SANITY_CHECK_NOTHING();
 }
@@ -113,12 +113,13 @@ typedef perf::TestBaseWithParam<tuple<int, StrategyType> > Stage_Segments_Strate
 PERF_TEST_P(Stage_Segments_Strategy, merging, testing::Combine(SEGMENT_COUNTS, StrategyType::all()))
 {
     const std::vector<Vec4f> segments = recordedSegments(get<0>(GetParam()));
-    const lsda::MergeParams params = mergeParams(get<1>(GetParam()));
+    const LSDAdvance::Params params = mergeParams(get<1>(GetParam()));
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
+    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
     std::vector<Vec4f> merged;
     lsda::MergeWorkspace workspace;
-    TEST_CYCLE() lsda::mergeGroups(segments, groups, params, merged, workspace);
+    std::vector<int> mergedInto;
+    TEST_CYCLE() lsda::mergeGroups(segments, groups, params, merged, mergedInto, workspace);
     EXPECT_LT(merged.size(), segments.size());
     SANITY_CHECK_NOTHING();
 }
@@ -127,7 +128,7 @@ PERF_TEST_P(Stage_Segments_Strategy, merging, testing::Combine(SEGMENT_COUNTS, S
 PERF_TEST_P(Stage_Segments, allStages, SEGMENT_COUNTS)
 {
     const std::vector<Vec4f> segments = recordedSegments(GetParam());
-    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
+    Ptr<LSDAdvance> detector = createLSDAdvance();
     std::vector<Vec4f> lines;
     TEST_CYCLE() detector->processSegments(segments, lines);
     EXPECT_LT(lines.size(), segments.size());
@@ -139,13 +140,14 @@ PERF_TEST_P(Stage_Segments_Strategy, mergingOneGroup,
             testing::Combine(testing::Values(1000, 5000, 20000), StrategyType::all()))
 {
     const std::vector<Vec4f> segments = oneEdgeInPieces(get<0>(GetParam()));
-    const lsda::MergeParams params = mergeParams(get<1>(GetParam()));
+    const LSDAdvance::Params params = mergeParams(get<1>(GetParam()));
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
+    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
     ASSERT_EQ(1, groups.count());
     std::vector<Vec4f> merged;
     lsda::MergeWorkspace workspace;
-    TEST_CYCLE() lsda::mergeGroups(segments, groups, params, merged, workspace);
+    std::vector<int> mergedInto;
+    TEST_CYCLE() lsda::mergeGroups(segments, groups, params, merged, mergedInto, workspace);
     EXPECT_LT(merged.size(), segments.size());
     SANITY_CHECK_NOTHING();
 }

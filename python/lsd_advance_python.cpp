@@ -9,6 +9,8 @@
 
 #include <opencv2/lsd_advance.hpp>
 
+#include "parameters.hpp"  // the parameter tables (src/)
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -21,6 +23,7 @@ namespace py = pybind11;
 using namespace pybind11::literals;
 using namespace cv;
 using namespace cv::ximgproc;
+using namespace cv::ximgproc::line_evaluation;
 
 namespace {
 
@@ -384,6 +387,25 @@ void copyFileNode(const FileNode& node, const std::string& key, const py::object
         fs.attr("write")(key, (std::string)node);
 }
 
+// EdgeDrawing::Params as cv2.ximgproc.EdgeDrawing.Params, field by field (the table's rows).
+py::object toPythonEdLinesParams(const EdgeDrawing::Params& p)
+{
+    py::object o = importCv2("getEDLinesParams").attr("ximgproc").attr("EdgeDrawing").attr("Params")();
+#define LSDA_TO_PYTHON(type, field, range, legacyKey) o.attr(#field) = p.field;
+    LSDA_EDLINES_PARAMS(LSDA_TO_PYTHON)
+#undef LSDA_TO_PYTHON
+    return o;
+}
+
+EdgeDrawing::Params fromPythonEdLinesParams(const py::handle& o)
+{
+    EdgeDrawing::Params p;
+#define LSDA_FROM_PYTHON(type, field, range, legacyKey) p.field = o.attr(#field).cast<type>();
+    LSDA_EDLINES_PARAMS(LSDA_FROM_PYTHON)
+#undef LSDA_FROM_PYTHON
+    return p;
+}
+
 std::string statsRepr(const LSDAdvanceStats& s)
 {
     return format("LSDAdvanceStats(baseSegments=%d, mergedSegments=%d, filteredSegments=%d, mergeGroups=%d, "
@@ -394,9 +416,6 @@ std::string statsRepr(const LSDAdvanceStats& s)
 }
 
 } // namespace
-
-#define LSDA_PARAM(Name, argName)                                                                    \
-    def("get" #Name, &LSDAdvance::get##Name).def("set" #Name, &LSDAdvance::set##Name, py::arg(#argName))
 
 PYBIND11_MODULE(_lsd_advance, m)
 {
@@ -440,8 +459,32 @@ PYBIND11_MODULE(_lsd_advance, m)
         .def_readwrite("mergingMs", &LSDAdvanceStats::mergingMs)
         .def("__repr__", &statsRepr);
 
-    py::class_<LSDAdvance, std::shared_ptr<LSDAdvance>>(m, "LSDAdvance",
-                                                        "Line segment detector; create it with createLSDAdvance().")
+    py::class_<LSDAdvance, std::shared_ptr<LSDAdvance>> detector(m, "LSDAdvance",
+                                                                  "Line segment detector; create it with createLSDAdvance().");
+    // The parameter structs, nested in the class as cv2 nests them (cv2.ximgproc.LSDAdvance.Params).
+    py::class_<LSDAdvance::Params> ownParams(detector, "Params", "LSDAdvance's own parameters.");
+    ownParams.def(py::init<>());
+#define LSDA_FIELD(type, field, Accessor, value, range, legacyKey) ownParams.def_readwrite(#field, &LSDAdvance::Params::field);
+    LSDA_PARAMS(LSDA_FIELD)
+#undef LSDA_FIELD
+    py::class_<LSDAdvance::LSDParams> lsdParams(detector, "LSDParams", "The LSD algorithm's parameters (BASE_LSD).");
+    lsdParams.def(py::init<>());
+#define LSDA_FIELD(type, field, value, range, legacyKey) lsdParams.def_readwrite(#field, &LSDAdvance::LSDParams::field);
+    LSDA_LSD_PARAMS(LSDA_FIELD)
+#undef LSDA_FIELD
+    py::class_<LSDAdvance::FLDParams> fldParams(detector, "FLDParams", "FastLineDetector's parameters (BASE_FLD).");
+    fldParams.def(py::init<>());
+#define LSDA_FIELD(type, field, value, range, legacyKey) fldParams.def_readwrite(#field, &LSDAdvance::FLDParams::field);
+    LSDA_FLD_PARAMS(LSDA_FIELD)
+#undef LSDA_FIELD
+    // A getter and a setter per parameter, as the in-tree bindings have them.
+#define LSDA_ACCESSORS(type, field, Accessor, value, range, legacyKey)                                     \
+    detector.def("get" #Accessor, &LSDAdvance::get##Accessor);                                             \
+    detector.def("set" #Accessor, &LSDAdvance::set##Accessor, py::arg(#field));
+    LSDA_PARAMS(LSDA_ACCESSORS)
+#undef LSDA_ACCESSORS
+
+    detector
         .def(
             "detect",
             [](LSDAdvance& self, const py::object& image, const py::object& lines) {
@@ -453,14 +496,50 @@ PYBIND11_MODULE(_lsd_advance, m)
             "an N x 1 x 4 float32 array (x1, y1, x2, y2), or None when there is no segment.")
         .def(
             "processSegments",
-            [](LSDAdvance& self, const py::object& segments, const py::object& lines) {
+            [](LSDAdvance& self, const py::object& segments, const py::object& lines, const std::array<int, 2>& imageSize) {
                 const ArrayArg in = toMat(segments, "segments");
+                const Size size = toSize(imageSize);
                 return callWithOutput(in, lines, "lines",
-                                      [&self](const Mat& i, Mat& o) { self.processSegments(i, o); });
+                                      [&self, size](const Mat& i, Mat& o) { self.processSegments(i, o, size); });
             },
-            "segments"_a, "lines"_a = py::none(),
-            "processSegments(segments[, lines]) -> lines\n\nRuns stages 1-3 on segments (N x 1 x 4 float32) of "
-            "any detector.")
+            "segments"_a, "lines"_a = py::none(), "imageSize"_a = std::array<int, 2>{ { 0, 0 } },
+            "processSegments(segments[, lines[, imageSize]]) -> lines\n\nRuns stages 1-3 on segments (N x 1 x 4 "
+            "float32) of any detector; clips them to an image of imageSize (width, height) when given.")
+        .def(
+            "drawSegments",
+            [](LSDAdvance& self, const py::object& image, const py::object& lines) {
+                ArrayArg canvas = toMat(image, "image", true);
+                const ArrayArg segments = toMat(lines, "lines");
+                self.drawSegments(canvas.mat, segments.mat);
+                return returnedOutput(image, canvas);
+            },
+            "image"_a, "lines"_a,
+            "drawSegments(image, lines) -> image\n\nDraws the segments in red on an 8-bit gray (made BGR) or BGR image.")
+        .def(
+            "getLastSources",
+            [](const LSDAdvance& self) {
+                std::vector<Mat> sources;
+                self.getLastSources(sources);
+                py::tuple result(sources.size());
+                for (size_t j = 0; j < sources.size(); j++)
+                    result[j] = toNumpy(sources[j]);
+                return result;
+            },
+            "getLastSources() -> sources\n\nFor each line of the last call, the indices (N x 1 int32) of the base "
+            "segments it was made from.")
+        .def("getParams", &LSDAdvance::getParams)
+        .def("setParams", &LSDAdvance::setParams, "params"_a)
+        .def("getLSDParams", &LSDAdvance::getLSDParams)
+        .def("setLSDParams", &LSDAdvance::setLSDParams, "params"_a)
+        .def("getFLDParams", &LSDAdvance::getFLDParams)
+        .def("setFLDParams", &LSDAdvance::setFLDParams, "params"_a)
+        .def("getEDLinesParams", [](const LSDAdvance& self) { return toPythonEdLinesParams(self.getEDLinesParams()); },
+             "getEDLinesParams() -> params\n\nThe parameters of BASE_EDLINES, as a cv2.ximgproc.EdgeDrawing.Params.")
+        .def(
+            "setEDLinesParams",
+            [](LSDAdvance& self, const py::object& p) { self.setEDLinesParams(fromPythonEdLinesParams(p)); }, "params"_a,
+            "setEDLinesParams(params) -> None\n\nSets the parameters of BASE_EDLINES from a "
+            "cv2.ximgproc.EdgeDrawing.Params.")
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
         .def(
             "detectKeyLines",
@@ -539,85 +618,21 @@ PYBIND11_MODULE(_lsd_advance, m)
             },
             "fn"_a,
             "read(fn) -> None\n\nReads the parameters from a cv2.FileNode, e.g. "
-            "cv2.FileStorage(path, cv2.FILE_STORAGE_READ).getNode('LSDAdvance') for a file written by save().")
-        .LSDA_PARAM(LsdRefine, refine)
-        .LSDA_PARAM(LsdScale, scale)
-        .LSDA_PARAM(LsdSigmaScale, sigmaScale)
-        .LSDA_PARAM(LsdQuant, quant)
-        .LSDA_PARAM(LsdAngleTolerance, degrees)
-        .LSDA_PARAM(LsdLogEps, logEps)
-        .LSDA_PARAM(LsdDensityThreshold, density)
-        .LSDA_PARAM(LsdNumBins, bins)
-        .LSDA_PARAM(BaseDetector, detector)
-        .LSDA_PARAM(FldLengthThreshold, pixels)
-        .LSDA_PARAM(FldDistanceThreshold, pixels)
-        .LSDA_PARAM(FldCannyThreshold1, threshold)
-        .LSDA_PARAM(FldCannyThreshold2, threshold)
-        .LSDA_PARAM(FldCannyApertureSize, size)
-        .LSDA_PARAM(FldDoMerge, merge)
-        .LSDA_PARAM(EdGradientOperator, op)
-        .LSDA_PARAM(EdGradientThreshold, threshold)
-        .LSDA_PARAM(EdAnchorThreshold, threshold)
-        .LSDA_PARAM(EdScanInterval, interval)
-        .LSDA_PARAM(EdMinPathLength, pixels)
-        .LSDA_PARAM(EdSigma, sigma)
-        .LSDA_PARAM(EdNfaValidation, validate)
-        .LSDA_PARAM(EdMinLineLength, pixels)
-        .LSDA_PARAM(EdLineFitErrorThreshold, pixels)
-        .LSDA_PARAM(EdMaxDistanceBetweenTwoLines, pixels)
-        .LSDA_PARAM(EdMaxErrorThreshold, pixels)
-        .LSDA_PARAM(LengthFilterMode, mode)
-        .LSDA_PARAM(LengthThreshold, rule)
-        .LSDA_PARAM(LengthThresholdScale, scale)
-        .LSDA_PARAM(KeepStrongSegments, keep)
-        .LSDA_PARAM(MergeStrategy, strategy)
-        .LSDA_PARAM(StageOrder, order)
-        .LSDA_PARAM(AngleBinWidth, degrees)
-        .LSDA_PARAM(AngleBinning, binning)
-        .LSDA_PARAM(EndpointDistance, pixels)
-        .LSDA_PARAM(BaselineRatio, ratio)
-        .LSDA_PARAM(DirectionWeight, weight)
-        .LSDA_PARAM(ProximityWeight, weight)
-        .LSDA_PARAM(LengthWeight, weight)
-        .LSDA_PARAM(ProximityRatio, ratio)
-        .LSDA_PARAM(MergeThreshold, threshold)
-        .LSDA_PARAM(MaxPerpendicularOffset, pixels);
+            "cv2.FileStorage(path, cv2.FILE_STORAGE_READ).getNode('LSDAdvance') for a file written by save().");
 
     m.def(
         "createLSDAdvance",
-        [](int lengthFilterMode, double endpointDistance, double mergeThreshold) {
-            return std::shared_ptr<LSDAdvance>(createLSDAdvance(lengthFilterMode, endpointDistance, mergeThreshold));
-        },
-        "lengthFilterMode"_a = (int)LSDAdvance::LENGTH_FILTER_INTERFRAME, "endpointDistance"_a = 10.0,
-        "mergeThreshold"_a = 0.6,
-        "createLSDAdvance([, lengthFilterMode[, endpointDistance[, mergeThreshold]]]) -> retval");
+        [](int preset) { return std::shared_ptr<LSDAdvance>(createLSDAdvance((LSDAdvance::Preset)preset)); },
+        "preset"_a = (int)LSDAdvance::PRESET_MOST_ACCURATE, "createLSDAdvance([, preset]) -> retval");
 
-    // Constants named as OpenCV 4.6's generator names them (cv2.ximgproc.LSDAdvance_...).
-    const std::vector<std::pair<const char*, int>> constants = {
-        { "LSDAdvance_LENGTH_FILTER_NONE", LSDAdvance::LENGTH_FILTER_NONE },
-        { "LSDAdvance_LENGTH_FILTER_ADAPTIVE", LSDAdvance::LENGTH_FILTER_ADAPTIVE },
-        { "LSDAdvance_LENGTH_FILTER_INTERFRAME", LSDAdvance::LENGTH_FILTER_INTERFRAME },
-        { "LSDAdvance_LENGTH_FILTER_INTERFRAME_CONTINUOUS", LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS },
-        { "LSDAdvance_LENGTH_FILTER_COUNT_TRACKING", LSDAdvance::LENGTH_FILTER_COUNT_TRACKING },
-        { "LSDAdvance_LENGTH_THRESHOLD_PAPER", LSDAdvance::LENGTH_THRESHOLD_PAPER },
-        { "LSDAdvance_LENGTH_THRESHOLD_CAPPED", LSDAdvance::LENGTH_THRESHOLD_CAPPED },
-        { "LSDAdvance_MERGE_NONE", LSDAdvance::MERGE_NONE },
-        { "LSDAdvance_MERGE_BASELINES", LSDAdvance::MERGE_BASELINES },
-        { "LSDAdvance_MERGE_LONGEST_FIRST", LSDAdvance::MERGE_LONGEST_FIRST },
-        { "LSDAdvance_FILTER_THEN_MERGE", LSDAdvance::FILTER_THEN_MERGE },
-        { "LSDAdvance_MERGE_THEN_FILTER", LSDAdvance::MERGE_THEN_FILTER },
-        { "LSDAdvance_ANGLE_BINS_STRICT", LSDAdvance::ANGLE_BINS_STRICT },
-        { "LSDAdvance_ANGLE_BINS_NEIGHBOURS", LSDAdvance::ANGLE_BINS_NEIGHBOURS },
-        { "LSDAdvance_BASE_LSD", LSDAdvance::BASE_LSD },
-        { "LSDAdvance_BASE_FLD", LSDAdvance::BASE_FLD },
-        { "LSDAdvance_BASE_EDLINES", LSDAdvance::BASE_EDLINES },
-        { "LSDAdvance_BASE_FAST_LSD", LSDAdvance::BASE_FAST_LSD },
-        { "EPIPOLAR_CONSISTENT", EPIPOLAR_CONSISTENT },
-        { "EPIPOLAR_INCONSISTENT", EPIPOLAR_INCONSISTENT },
-        { "EPIPOLAR_UNDECIDABLE", EPIPOLAR_UNDECIDABLE },
-    };
-    for (const auto& c : constants)
-        m.attr(c.first) = c.second;
+    // Constants named as OpenCV 4.6's generator names them (cv2.ximgproc.LSDAdvance_...): the names of
+    // the enumerated parameters of the table, and the presets.
+    for (const lsda::Field<LSDAdvance::Params>& f : lsda::fieldsOf<LSDAdvance::Params>())
+        if (f.range.kind == lsda::Range::ENUM)
+            for (int k = 0; k < f.range.count; k++)
+                m.attr(("LSDAdvance_" + std::string(f.range.names[k])).c_str()) = k;
+    for (int k = 0; k < LSDA_COUNT_OF(lsda::kPresets); k++)
+        m.attr(("LSDAdvance_" + std::string(lsda::kPresets[k])).c_str()) = k;
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     m.def(
@@ -645,71 +660,6 @@ PYBIND11_MODULE(_lsd_advance, m)
         "keylines"_a,
         "keyLinesToLines(keylines) -> lines\n\nKeyLines back to segments (startPoint, endPoint), N x 1 x 4 float32.");
 #endif
-
-    // Evaluation (opencv2/lsd_advance/evaluation.hpp), as cv2.ximgproc has it in-tree.
-    py::class_<StructuralMatchParams>(m, "StructuralMatchParams")
-        .def(py::init<>())
-        .def_readwrite("maxDistance", &StructuralMatchParams::maxDistance)
-        .def_readwrite("maxAngle", &StructuralMatchParams::maxAngle)
-        .def_readwrite("minCoverage", &StructuralMatchParams::minCoverage)
-        .def_readwrite("offset", &StructuralMatchParams::offset);
-    py::class_<StructuralScore>(m, "StructuralScore")
-        .def(py::init<>())
-        .def_readwrite("precision", &StructuralScore::precision)
-        .def_readwrite("recall", &StructuralScore::recall)
-        .def_readwrite("matchedLength", &StructuralScore::matchedLength)
-        .def_readwrite("detectedLength", &StructuralScore::detectedLength)
-        .def_readwrite("coveredLength", &StructuralScore::coveredLength)
-        .def_readwrite("groundTruthLength", &StructuralScore::groundTruthLength)
-        .def_readwrite("found", &StructuralScore::found)
-        .def_readwrite("groundTruthCount", &StructuralScore::groundTruthCount);
-    py::class_<HomographyMatchScore>(m, "HomographyMatchScore")
-        .def(py::init<>())
-        .def_readwrite("matches", &HomographyMatchScore::matches)
-        .def_readwrite("correct", &HomographyMatchScore::correct)
-        .def_readwrite("precision", &HomographyMatchScore::precision)
-        .def_readwrite("repeatability", &HomographyMatchScore::repeatability)
-        .def_readwrite("localisationError", &HomographyMatchScore::localisationError)
-        .def_readwrite("repeated", &HomographyMatchScore::repeated)
-        .def_readwrite("visible", &HomographyMatchScore::visible);
-    py::class_<EpipolarMatchScore>(m, "EpipolarMatchScore")
-        .def(py::init<>())
-        .def_readwrite("matches", &EpipolarMatchScore::matches)
-        .def_readwrite("consistent", &EpipolarMatchScore::consistent)
-        .def_readwrite("inconsistent", &EpipolarMatchScore::inconsistent)
-        .def_readwrite("undecidable", &EpipolarMatchScore::undecidable)
-        .def_readwrite("precision", &EpipolarMatchScore::precision);
-    py::class_<SequenceData>(m, "SequenceData")
-        .def(py::init<>())
-        .def_readwrite("imagePaths", &SequenceData::imagePaths)
-        .def_property_readonly("P0", [](const SequenceData& s) { return toNumpy(s.P0); })
-        .def_property_readonly("P1", [](const SequenceData& s) { return toNumpy(s.P1); })
-        .def_property_readonly("poses", [](const SequenceData& s) {
-            py::list poses;
-            for (const Mat& p : s.poses)
-                poses.append(toNumpy(p));
-            return poses;
-        });
-
-    m.def(
-        "evaluateStructural",
-        [](const py::object& detections, const py::object& groundTruth, const StructuralMatchParams& params) {
-            return evaluateStructural(toMat(detections, "detections").mat, toMat(groundTruth, "groundTruth").mat,
-                                      params);
-        },
-        "detections"_a, "groundTruth"_a, "params"_a = StructuralMatchParams());
-    m.def("fScore", &fScore, "averagePrecision"_a, "averageRecall"_a);
-    m.def(
-        "longSegmentShare",
-        [](const py::object& lines, double minLength) { return longSegmentShare(toMat(lines, "lines").mat, minLength); },
-        "lines"_a, "minLength"_a = 60.0);
-    m.def(
-        "readSegments", [](const std::string& path) { return toNumpy(readSegments(path)); }, "path"_a);
-    m.def(
-        "writeSegments",
-        [](const std::string& path, const py::object& lines) { writeSegments(path, toMat(lines, "lines").mat); },
-        "path"_a, "lines"_a);
-    m.def("loadSequence", &loadSequence, "folder"_a);
     m.def(
         "computeLineResponses",
         [](const py::object& image, const py::object& lines) {
@@ -722,13 +672,83 @@ PYBIND11_MODULE(_lsd_advance, m)
         "image"_a, "lines"_a,
         "computeLineResponses(image, lines) -> responses\n\nResponse of each segment (N x 1 float32): "
         "length / max(width, height) times the squared mean contrast across it / 255.");
-    m.def(
+
+    // Evaluation (opencv2/lsd_advance/evaluation.hpp), as cv2.ximgproc.line_evaluation has it in-tree.
+    py::module_ ev = m.def_submodule("line_evaluation", "Evaluation of line segments and line matches "
+                                                          "(cv::ximgproc::line_evaluation).");
+    ev.attr("EPIPOLAR_CONSISTENT") = (int)EPIPOLAR_CONSISTENT;
+    ev.attr("EPIPOLAR_INCONSISTENT") = (int)EPIPOLAR_INCONSISTENT;
+    ev.attr("EPIPOLAR_UNDECIDABLE") = (int)EPIPOLAR_UNDECIDABLE;
+    py::class_<StructuralMatchParams>(ev, "StructuralMatchParams")
+        .def(py::init<>())
+        .def_readwrite("maxDistance", &StructuralMatchParams::maxDistance)
+        .def_readwrite("maxAngle", &StructuralMatchParams::maxAngle)
+        .def_readwrite("minCoverage", &StructuralMatchParams::minCoverage)
+        .def_readwrite("offset", &StructuralMatchParams::offset);
+    py::class_<StructuralScore>(ev, "StructuralScore")
+        .def(py::init<>())
+        .def_readwrite("precision", &StructuralScore::precision)
+        .def_readwrite("recall", &StructuralScore::recall)
+        .def_readwrite("matchedLength", &StructuralScore::matchedLength)
+        .def_readwrite("detectedLength", &StructuralScore::detectedLength)
+        .def_readwrite("coveredLength", &StructuralScore::coveredLength)
+        .def_readwrite("groundTruthLength", &StructuralScore::groundTruthLength)
+        .def_readwrite("found", &StructuralScore::found)
+        .def_readwrite("groundTruthCount", &StructuralScore::groundTruthCount);
+    py::class_<HomographyMatchScore>(ev, "HomographyMatchScore")
+        .def(py::init<>())
+        .def_readwrite("matches", &HomographyMatchScore::matches)
+        .def_readwrite("correct", &HomographyMatchScore::correct)
+        .def_readwrite("precision", &HomographyMatchScore::precision)
+        .def_readwrite("repeatability", &HomographyMatchScore::repeatability)
+        .def_readwrite("localisationError", &HomographyMatchScore::localisationError)
+        .def_readwrite("repeated", &HomographyMatchScore::repeated)
+        .def_readwrite("visible", &HomographyMatchScore::visible);
+    py::class_<EpipolarMatchScore>(ev, "EpipolarMatchScore")
+        .def(py::init<>())
+        .def_readwrite("matches", &EpipolarMatchScore::matches)
+        .def_readwrite("consistent", &EpipolarMatchScore::consistent)
+        .def_readwrite("inconsistent", &EpipolarMatchScore::inconsistent)
+        .def_readwrite("undecidable", &EpipolarMatchScore::undecidable)
+        .def_readwrite("precision", &EpipolarMatchScore::precision);
+    py::class_<SequenceData>(ev, "SequenceData")
+        .def(py::init<>())
+        .def_readwrite("imagePaths", &SequenceData::imagePaths)
+        .def_property_readonly("P0", [](const SequenceData& s) { return toNumpy(s.P0); })
+        .def_property_readonly("P1", [](const SequenceData& s) { return toNumpy(s.P1); })
+        .def_property_readonly("poses", [](const SequenceData& s) {
+            py::list poses;
+            for (const Mat& p : s.poses)
+                poses.append(toNumpy(p));
+            return poses;
+        });
+
+    ev.def(
+        "evaluateStructural",
+        [](const py::object& detections, const py::object& groundTruth, const StructuralMatchParams& params) {
+            return evaluateStructural(toMat(detections, "detections").mat, toMat(groundTruth, "groundTruth").mat,
+                                      params);
+        },
+        "detections"_a, "groundTruth"_a, "params"_a = StructuralMatchParams());
+    ev.def("fScore", &fScore, "averagePrecision"_a, "averageRecall"_a);
+    ev.def(
+        "longSegmentShare",
+        [](const py::object& lines, double minLength) { return longSegmentShare(toMat(lines, "lines").mat, minLength); },
+        "lines"_a, "minLength"_a = 60.0);
+    ev.def(
+        "readSegments", [](const std::string& path) { return toNumpy(readSegments(path)); }, "path"_a);
+    ev.def(
+        "writeSegments",
+        [](const std::string& path, const py::object& lines) { writeSegments(path, toMat(lines, "lines").mat); },
+        "path"_a, "lines"_a);
+    ev.def("loadSequence", &loadSequence, "folder"_a);
+    ev.def(
         "correspondUnderHomography",
         [](const std::array<float, 4>& a, const std::array<float, 4>& b, const py::object& H, double maxDistance) {
             return correspondUnderHomography(toVec4f(a), toVec4f(b), toMat(H, "H").mat, maxDistance);
         },
         "a"_a, "b"_a, "H"_a, "maxDistance"_a = 3.0);
-    m.def(
+    ev.def(
         "evaluateHomographyMatches",
         [](const py::object& segments1, const py::object& segments2, const py::iterable& matches, const py::object& H,
            const std::array<int, 2>& imageSize1, const std::array<int, 2>& imageSize2, double maxDistance) {
@@ -737,18 +757,18 @@ PYBIND11_MODULE(_lsd_advance, m)
                                              toSize(imageSize2), maxDistance);
         },
         "segments1"_a, "segments2"_a, "matches"_a, "H"_a, "imageSize1"_a, "imageSize2"_a, "maxDistance"_a = 3.0);
-    m.def(
+    ev.def(
         "checkEpipolar",
         [](const std::array<float, 4>& a, const std::array<float, 4>& b, const py::object& F, double tolerance,
            double minAngle) { return checkEpipolar(toVec4f(a), toVec4f(b), toMat(F, "F").mat, tolerance, minAngle); },
         "a"_a, "b"_a, "F"_a, "tolerance"_a = 2.0, "minAngle"_a = 5.0);
-    m.def(
+    ev.def(
         "fundamentalFromPoses",
         [](const py::object& P, const py::object& pose1, const py::object& pose2) {
             return toNumpy(fundamentalFromPoses(toMat(P, "P").mat, toMat(pose1, "pose1").mat, toMat(pose2, "pose2").mat));
         },
         "P"_a, "pose1"_a, "pose2"_a);
-    m.def(
+    ev.def(
         "evaluateEpipolarMatches",
         [](const py::object& segments1, const py::object& segments2, const py::iterable& matches, const py::object& F,
            double tolerance, double minAngle) {
@@ -756,6 +776,6 @@ PYBIND11_MODULE(_lsd_advance, m)
                                            fromPythonMatches(matches), toMat(F, "F").mat, tolerance, minAngle);
         },
         "segments1"_a, "segments2"_a, "matches"_a, "F"_a, "tolerance"_a = 2.0, "minAngle"_a = 5.0);
-    m.def(
+    ev.def(
         "readHomography", [](const std::string& path) { return toNumpy(readHomography(path)); }, "path"_a);
 }

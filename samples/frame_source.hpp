@@ -68,7 +68,7 @@ public:
         const cv::String path = cv::samples::findFileOrKeep(input, true);
         const bool exists = cv::utils::fs::exists(path);
         if (cv::utils::fs::isDirectory(path))
-            paths_ = cv::ximgproc::loadSequence(path).imagePaths;  // name order; throws when there is none
+            paths_ = cv::ximgproc::line_evaluation::loadSequence(path).imagePaths;  // name order; throws when there is none
         else if (exists && cv::haveImageReader(path))
         {
             paths_.push_back(path);

@@ -70,9 +70,9 @@ inline double timedDetect(const LineMethod& method, const cv::Mat& gray, int rep
 //! Names accepted by makeLineMethod, for help texts.
 inline const char* lineMethodNames()
 {
-    return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_filter, lsdadvance_base, lsdadvance_merge, "
-           "lsdadvance_alpha1, lsdadvance_continuous, lsdadvance_tracking, lsdadvance_opencv_full, lsdadvance_opencv_lsd, lsdadvance_fld, "
-           "lsdadvance_edlines, lsdadvance_edlines_tuned"
+    return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_sequence, lsdadvance_filter, "
+           "lsdadvance_base, lsdadvance_merge, lsdadvance_interframe, lsdadvance_continuous, lsdadvance_tracking, "
+           "lsdadvance_opencv_full, lsdadvance_opencv_lsd, lsdadvance_fld, lsdadvance_edlines, lsdadvance_edlines_tuned"
 #ifdef LSD_ADVANCE_HAVE_ELSED
            ", elsed"
 #endif
@@ -104,23 +104,6 @@ inline void detectPlVins(const cv::Ptr<cv::LineSegmentDetector>& lsd, const cv::
     for (const cv::Vec4f& l : all)
         if (std::hypot(l[2] - l[0], l[3] - l[1]) >= minLength)
             lines.push_back(l);
-}
-
-//! LSDAdvance as the paper describes it: OpenCV's default LSD as the base, the length filter
-//! (by length alone) first, then merging into the baselines of each group.
-inline cv::Ptr<cv::ximgproc::LSDAdvance> paperLSDAdvance()
-{
-    using cv::ximgproc::LSDAdvance;
-    cv::Ptr<LSDAdvance> detector = cv::ximgproc::createLSDAdvance();
-    detector->setBaseDetector(LSDAdvance::BASE_LSD);
-    detector->setLsdRefine(cv::LSD_REFINE_STD);
-    detector->setLsdScale(0.8);
-    detector->setLengthThreshold(LSDAdvance::LENGTH_THRESHOLD_PAPER);
-    detector->setStageOrder(LSDAdvance::FILTER_THEN_MERGE);
-    detector->setMergeStrategy(LSDAdvance::MERGE_BASELINES);
-    detector->setProximityRatio(0.1);
-    detector->setKeepStrongSegments(false);
-    return detector;
 }
 
 //! The LSDAdvance parameters file of --params, open for reading; closed for an empty path.
@@ -203,25 +186,35 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
         return lineMethodOf("LSDAdvance", detector);
     }
     if (name == "lsdadvance_paper")
-        return lineMethodOf("LSDAdvance (paper)", paperLSDAdvance());
+        return lineMethodOf("LSDAdvance (paper)", ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_PAPER));
+    if (name == "lsdadvance_sequence")
+        return lineMethodOf("LSDAdvance (sequence preset)", ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_SEQUENCE));
     if (name == "lsdadvance_filter")
     {
-        Ptr<ximgproc::LSDAdvance> detector = paperLSDAdvance();
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_PAPER);
         detector->setMergeStrategy(ximgproc::LSDAdvance::MERGE_NONE);
         return lineMethodOf("LSDAdvance (paper, length filter only)", detector);
     }
-    // The length filter's sequence modes, everything else at the defaults.
-    if (name == "lsdadvance_alpha1")
-        return lineMethodOf("LSDAdvance, alpha = 1", ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_ADAPTIVE));
-    if (name == "lsdadvance_continuous")
-        return lineMethodOf("LSDAdvance, continuous inter-frame rule",
-                            ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS));
-    if (name == "lsdadvance_tracking")
-        return lineMethodOf("LSDAdvance, count tracking",
-                            ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_COUNT_TRACKING));
-    if (name == "lsdadvance_merge")
-        return lineMethodOf("LSDAdvance, merging only (no length filter)",
-                            ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE));
+    // The length filter's modes, everything else at the defaults (stateless, alpha = 1).
+    if (name == "lsdadvance_interframe" || name == "lsdadvance_continuous" || name == "lsdadvance_tracking" ||
+        name == "lsdadvance_merge")
+    {
+        struct Mode { const char* method; int mode; const char* title; };
+        static const Mode modes[] = {
+            { "lsdadvance_interframe", ximgproc::LSDAdvance::LENGTH_FILTER_INTERFRAME, "LSDAdvance, paper's inter-frame rule" },
+            { "lsdadvance_continuous", ximgproc::LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS,
+              "LSDAdvance, continuous inter-frame rule" },
+            { "lsdadvance_tracking", ximgproc::LSDAdvance::LENGTH_FILTER_COUNT_TRACKING, "LSDAdvance, count tracking" },
+            { "lsdadvance_merge", ximgproc::LSDAdvance::LENGTH_FILTER_NONE, "LSDAdvance, merging only (no length filter)" },
+        };
+        for (const Mode& m : modes)
+            if (name == m.method)
+            {
+                Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+                detector->setLengthFilterMode(m.mode);
+                return lineMethodOf(m.title, detector);
+            }
+    }
     // The default stages on other bases: OpenCV's LSD with the default base's set-up (full
     // resolution, no refinement) and with its own default set-up (refinement, scale 0.8),
     // FastLineDetector and EDLines with their defaults.
@@ -235,32 +228,34 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
     {
         Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
         detector->setBaseDetector(ximgproc::LSDAdvance::BASE_LSD);
-        detector->setLsdRefine(LSD_REFINE_STD);
-        detector->setLsdScale(0.8);
+        detector->setLSDParams(ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_PAPER)->getLSDParams());
         return lineMethodOf("LSDAdvance on OpenCV's default LSD", detector);
     }
     if (name == "lsdadvance_fld" || name == "lsdadvance_edlines")
     {
         const bool fld = name == "lsdadvance_fld";
-        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
-        detector->setBaseDetector(fld ? ximgproc::LSDAdvance::BASE_FLD : ximgproc::LSDAdvance::BASE_EDLINES);
-        return lineMethodOf(fld ? "LSDAdvance on FLD" : "LSDAdvance on EDLines", detector);
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_FASTEST);
+        if (fld)
+            detector->setBaseDetector(ximgproc::LSDAdvance::BASE_FLD);
+        return lineMethodOf(fld ? "LSDAdvance on FLD" : "LSDAdvance on EDLines (fastest preset)", detector);
     }
     // EDLines without smoothing and a higher gradient threshold, the paper's length threshold and
     // a 2 px gate: the best of the sweep on the even YorkUrban images (doc/performance.md).
     if (name == "lsdadvance_edlines_tuned")
     {
-        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
-        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_EDLINES);
-        detector->setEdSigma(0.5);
-        detector->setEdGradientThreshold(30);
-        detector->setLengthThreshold(ximgproc::LSDAdvance::LENGTH_THRESHOLD_PAPER);
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_FASTEST);
+        ximgproc::EdgeDrawing::Params ed = detector->getEDLinesParams();
+        ed.Sigma = 0.5f;
+        ed.GradientThresholdValue = 30;
+        detector->setEDLinesParams(ed);
+        detector->setLengthThresholdRule(ximgproc::LSDAdvance::LENGTH_THRESHOLD_PAPER);
         detector->setMaxPerpendicularOffset(2.0);
         return lineMethodOf("LSDAdvance on EDLines, tuned", detector);
     }
     if (name == "lsdadvance_base")
     {
-        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::LENGTH_FILTER_NONE);
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setLengthFilterMode(ximgproc::LSDAdvance::LENGTH_FILTER_NONE);
         detector->setMergeStrategy(ximgproc::LSDAdvance::MERGE_NONE);
         return lineMethodOf("LSDAdvance's base LSD alone", detector);
     }

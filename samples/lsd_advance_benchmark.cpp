@@ -35,6 +35,7 @@
 
 using namespace cv;
 using namespace cv::ximgproc;
+using namespace cv::ximgproc::line_evaluation;
 
 namespace {
 
@@ -357,7 +358,7 @@ struct MatchTotals
     double matches = 0, correct = 0, undecidable = 0, decided = 0;
     double repeated = 0, visible = 0, errorSum = 0;
 
-    void addHomography(const ximgproc::HomographyMatchScore& s)
+    void addHomography(const ximgproc::line_evaluation::HomographyMatchScore& s)
     {
         pairs++;
         matches += s.matches;
@@ -367,7 +368,7 @@ struct MatchTotals
         visible += s.visible;
         errorSum += s.localisationError * s.repeated;
     }
-    void addEpipolar(const ximgproc::EpipolarMatchScore& s)
+    void addEpipolar(const ximgproc::line_evaluation::EpipolarMatchScore& s)
     {
         pairs++;
         matches += s.matches;

@@ -32,7 +32,7 @@ struct Totals
     void add(const std::vector<Vec4f>& lines, double medianMs, double longLength)
     {
         segments += lines.size();
-        longSegments += (size_t)cvRound(ximgproc::longSegmentShare(lines, longLength) * (double)lines.size());
+        longSegments += (size_t)cvRound(ximgproc::line_evaluation::longSegmentShare(lines, longLength) * (double)lines.size());
         ms.push_back(medianMs);
     }
     void print(const char* name, size_t images) const

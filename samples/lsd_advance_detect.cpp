@@ -6,7 +6,8 @@
 // of the methods of line_methods.hpp, optionally writes them (<stem>.txt, x1 y1 x2 y2 per row)
 // and drawn on the image (<stem>.png), and prints segments per image, the share of long
 // segments and the time of the detection. For LSDAdvance it also draws what each stage did
-// (--draw=filter,groups,merge), like the figures of the paper, from getLastStageOutputs().
+// (--draw=filter,groups,merge), like the figures of the paper, from getLastStageOutputs() and
+// getLastSources().
 
 #include "command_line.hpp"
 #include "frame_source.hpp"
@@ -23,7 +24,6 @@
 #include <cctype>
 #include <cstdio>
 #include <iostream>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -195,20 +195,6 @@ Mat withCaption(const Mat& picture, const std::string& title, const std::vector<
     return out;
 }
 
-// The segments' exact coordinates, to tell a segment a stage passed on unchanged from a new one.
-std::set<std::vector<float> > keysOf(const std::vector<Vec4f>& segments)
-{
-    std::set<std::vector<float> > keys;
-    for (const Vec4f& s : segments)
-        keys.insert(std::vector<float>(s.val, s.val + 4));
-    return keys;
-}
-
-bool contains(const std::set<std::vector<float> >& keys, const Vec4f& s)
-{
-    return keys.count(std::vector<float>(s.val, s.val + 4)) > 0;
-}
-
 // Distinct colour number k: hues spaced by the golden angle, bright and saturated.
 Scalar groupColour(int k)
 {
@@ -219,17 +205,20 @@ Scalar groupColour(int k)
     return Scalar(c[0], c[1], c[2]);
 }
 
-// The outputs of the stages of the last detect() and how they were run.
+// The outputs of the stages of the last detect(), the lines it returned with the base segments
+// each was made from, and how the stages were run.
 struct Stages
 {
-    std::vector<Vec4f> base, filtered, merged;
+    std::vector<Vec4f> base, filtered, merged, lines;
     std::vector<int> labels;
+    std::vector<std::vector<int> > sources;
     ximgproc::LSDAdvanceStats stats;
     bool filterFirst = false, filterOn = false, mergeOn = false;
 
-    explicit Stages(const ximgproc::LSDAdvance& detector)
+    Stages(const ximgproc::LSDAdvance& detector, const std::vector<Vec4f>& returned) : lines(returned)
     {
         detector.getLastStageOutputs(base, filtered, labels, merged);
+        detector.getLastSources(sources);
         stats = detector.getLastStats();
         filterFirst = detector.getStageOrder() == ximgproc::LSDAdvance::FILTER_THEN_MERGE;
         filterOn = detector.getLengthFilterMode() != ximgproc::LSDAdvance::LENGTH_FILTER_NONE;
@@ -291,41 +280,41 @@ Mat drawGroups(StageCanvas canvas, const Stages& st)
                                         { kGrey, format("alone: %d", alone) } });
 }
 
-// (c) Stage 3: every fused segment as a wide band with the pieces it was made of drawn thin on
-// top in alternating colours; segments that merging left as they were in grey.
+// (c) Stage 3: every returned line fused from several base segments (getLastSources()) as a wide
+// band with those pieces drawn thin on top in alternating colours; lines of one segment in grey.
 Mat drawMerge(StageCanvas canvas, const Stages& st)
 {
     const int w = canvas.stroke;
-    const std::vector<Vec4f>& input = st.groupingInput();
-    const std::set<std::vector<float> > inputKeys = keysOf(input), outputKeys = keysOf(st.merged);
     int fused = 0, pieces = 0, unchanged = 0;
-    for (const Vec4f& s : st.merged)
-        if (contains(inputKeys, s))
+    for (size_t j = 0; j < st.lines.size(); j++)
+        if (st.sources[j].size() == 1)
         {
-            canvas.segment(s, kGrey, w);
+            canvas.segment(st.lines[j], kGrey, w);
             unchanged++;
         }
     Mat bands = canvas.image.clone();
-    for (const Vec4f& s : st.merged)
-        if (!contains(inputKeys, s))
+    for (size_t j = 0; j < st.lines.size(); j++)
+        if (st.sources[j].size() > 1)
         {
-            canvas.segmentOn(bands, s, kFused, 4 * w + 3);
+            canvas.segmentOn(bands, st.lines[j], kFused, 4 * w + 3);
             fused++;
         }
     addWeighted(bands, 0.6, canvas.image, 0.4, 0, canvas.image);
-    for (const Vec4f& s : input)
-        if (!contains(outputKeys, s))
-        {
-            const Scalar& c = pieces % 2 ? kPieceB : kPieceA;
-            canvas.segment(s, c, w);
-            canvas.endpoints(s, c);
-            pieces++;
-        }
-    const std::string title = format("Stage 3, merging: %zu segments in, %zu out%s%s", input.size(), st.merged.size(),
+    for (const std::vector<int>& from : st.sources)
+        if (from.size() > 1)
+            for (int i : from)
+            {
+                const Scalar& c = pieces % 2 ? kPieceB : kPieceA;
+                canvas.segment(st.base[i], c, w);
+                canvas.endpoints(st.base[i], c);
+                pieces++;
+            }
+    const std::string title = format("Stage 3, merging: %zu segments in, %zu out, %zu returned%s%s",
+                                     st.groupingInput().size(), st.merged.size(), st.lines.size(),
                                      st.mergeOn ? "" : " - merging off", canvas.shownPart().c_str());
-    return withCaption(canvas.image, title, { { kFused, format("fused segments: %d", fused) },
-                                        { kPieceA, format("pieces they were fused from (orange and pink in turn): %d", pieces) },
-                                        { kGrey, format("unchanged: %d", unchanged) } });
+    return withCaption(canvas.image, title, { { kFused, format("fused lines: %d", fused) },
+                                        { kPieceA, format("base segments they were fused from (orange and pink in turn): %d", pieces) },
+                                        { kGrey, format("lines of one segment: %d", unchanged) } });
 }
 
 void writeImage(const std::string& path, const Mat& image)
@@ -344,7 +333,7 @@ struct Summary
     {
         images++;
         segments += (double)lines.size();
-        longSegments += ximgproc::longSegmentShare(lines, longLength) * (double)lines.size();
+        longSegments += ximgproc::line_evaluation::longSegmentShare(lines, longLength) * (double)lines.size();
         ms.push_back(detectMs);
     }
 
@@ -382,7 +371,7 @@ int run(const CommandLine& args)
     if (!output.empty() && !utils::fs::createDirectories(output))
         throw std::runtime_error("cannot create the output folder " + output);
 
-    const Ptr<LineSegmentDetector> drawer = createLineSegmentDetector();
+    const Ptr<ximgproc::LSDAdvance> drawer = ximgproc::createLSDAdvance();
     Summary summary;
     Mat gray;
     std::string stem;
@@ -400,17 +389,16 @@ int run(const CommandLine& args)
         summary.add(lines, tm.getTimeMilli(), longLength);
 
         if (!output.empty() && writeTxt)
-            ximgproc::writeSegments(utils::fs::join(output, stem + ".txt"), lines);
+            ximgproc::line_evaluation::writeSegments(utils::fs::join(output, stem + ".txt"), lines);
         if (draw.lines)
         {
-            Mat canvas;
-            cvtColor(gray, canvas, COLOR_GRAY2BGR);
+            Mat canvas = gray.clone();
             drawer->drawSegments(canvas, lines);
             writeImage(utils::fs::join(output, stem + "." + extension), canvas);
         }
         if (draw.ofStages())
         {
-            const Stages stages(*method.lsdAdvance);
+            const Stages stages(*method.lsdAdvance, lines);
             const StageCanvas canvas(gray, zoomRegion(zoom, gray.size()));
             if (draw.filter)
                 writeImage(utils::fs::join(output, stem + "_filter." + extension), drawFilter(canvas, stages));

@@ -99,7 +99,7 @@ std::vector<MatchClass> classesUnderHomography(const std::vector<Vec4f>& segment
     std::vector<MatchClass> classes = { { "correct", kRight, {} }, { "wrong", kWrong, {} } };
     for (const DMatch& m : matches)
     {
-        const bool correct = ximgproc::correspondUnderHomography(segments1[m.queryIdx], segments2[m.trainIdx], H);
+        const bool correct = ximgproc::line_evaluation::correspondUnderHomography(segments1[m.queryIdx], segments2[m.trainIdx], H);
         classes[0].members.push_back(correct);
         classes[1].members.push_back(!correct);
     }
@@ -115,10 +115,10 @@ std::vector<MatchClass> classesUnderEpipolar(const std::vector<Vec4f>& segments1
                                         { "undecidable", kUndecided, {} } };
     for (const DMatch& m : matches)
     {
-        const int verdict = ximgproc::checkEpipolar(segments1[m.queryIdx], segments2[m.trainIdx], F);
-        classes[0].members.push_back(verdict == ximgproc::EPIPOLAR_CONSISTENT);
-        classes[1].members.push_back(verdict == ximgproc::EPIPOLAR_INCONSISTENT);
-        classes[2].members.push_back(verdict == ximgproc::EPIPOLAR_UNDECIDABLE);
+        const int verdict = ximgproc::line_evaluation::checkEpipolar(segments1[m.queryIdx], segments2[m.trainIdx], F);
+        classes[0].members.push_back(verdict == ximgproc::line_evaluation::EPIPOLAR_CONSISTENT);
+        classes[1].members.push_back(verdict == ximgproc::line_evaluation::EPIPOLAR_INCONSISTENT);
+        classes[2].members.push_back(verdict == ximgproc::line_evaluation::EPIPOLAR_UNDECIDABLE);
     }
     return classes;
 }
@@ -134,7 +134,7 @@ void checkDrawPath(const String& path)
 int matchPair(const LineMethod& method, const String& path1, const String& path2, const String& homographyPath,
               const LineMatchParams& params, const String& drawPath)
 {
-    const Mat H = homographyPath.empty() ? Mat() : ximgproc::readHomography(samples::findFile(homographyPath, true, true));
+    const Mat H = homographyPath.empty() ? Mat() : ximgproc::line_evaluation::readHomography(samples::findFile(homographyPath, true, true));
     const Mat gray1 = imread(samples::findFile(path1, true, true), IMREAD_GRAYSCALE);
     const Mat gray2 = imread(samples::findFile(path2, true, true), IMREAD_GRAYSCALE);
     if (gray1.empty() || gray2.empty())
@@ -153,8 +153,8 @@ int matchPair(const LineMethod& method, const String& path1, const String& path2
     std::printf("matches:         %zu\n", matches.size());
     if (!H.empty())
     {
-        const ximgproc::HomographyMatchScore s =
-            ximgproc::evaluateHomographyMatches(segments1, segments2, matches, H, gray1.size(), gray2.size());
+        const ximgproc::line_evaluation::HomographyMatchScore s =
+            ximgproc::line_evaluation::evaluateHomographyMatches(segments1, segments2, matches, H, gray1.size(), gray2.size());
         std::printf("correct:         %d (precision %.3f; mapped within 3 px, overlapping)\n", s.correct, s.precision);
         std::printf("repeatability:   %.3f (%d of %d visible segments)\n", s.repeatability, s.repeated, s.visible);
         std::printf("localisation:    %.2f px (mean, repeated segments)\n", s.localisationError);
@@ -170,9 +170,9 @@ int matchSequence(const LineMethod& method, const String& input, const LineMatch
                   const String& drawPath)
 {
     const String path = samples::findFileOrKeep(input, true);
-    ximgproc::SequenceData calibration;
+    ximgproc::line_evaluation::SequenceData calibration;
     if (utils::fs::isDirectory(path))
-        calibration = ximgproc::loadSequence(path);
+        calibration = ximgproc::line_evaluation::loadSequence(path);
     const bool withPoses = !calibration.P0.empty() && !calibration.poses.empty();
 
     FrameSource source(input);
@@ -180,7 +180,7 @@ int matchSequence(const LineMethod& method, const String& input, const LineMatch
     DescribedLines previous;
     std::string stem;
     int pairs = 0;
-    ximgproc::EpipolarMatchScore total;
+    ximgproc::line_evaluation::EpipolarMatchScore total;
     size_t totalMatches = 0;
     method.reset();
     // frame: the number of the image in the folder or video (skipped files count), for its pose.
@@ -199,10 +199,10 @@ int matchSequence(const LineMethod& method, const String& input, const LineMatch
             Mat F;
             if (withPoses)
             {
-                F = ximgproc::fundamentalFromPoses(calibration.P0, calibration.poses[previousFrame],
+                F = ximgproc::line_evaluation::fundamentalFromPoses(calibration.P0, calibration.poses[previousFrame],
                                                    calibration.poses[frame]);
-                const ximgproc::EpipolarMatchScore s =
-                    ximgproc::evaluateEpipolarMatches(previous.lines, current.lines, matches, F);
+                const ximgproc::line_evaluation::EpipolarMatchScore s =
+                    ximgproc::line_evaluation::evaluateEpipolarMatches(previous.lines, current.lines, matches, F);
                 std::printf(", consistent %d, inconsistent %d, undecidable %d", s.consistent, s.inconsistent,
                             s.undecidable);
                 total.consistent += s.consistent;

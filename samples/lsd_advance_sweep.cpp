@@ -24,6 +24,7 @@
 
 using namespace cv;
 using namespace cv::ximgproc;
+using namespace cv::ximgproc::line_evaluation;
 
 namespace {
 
@@ -53,8 +54,10 @@ typedef std::vector<std::vector<std::vector<Vec4f> > > BaseSegments;
 
 Ptr<LSDAdvance> detectorFor(const Setting& s)
 {
-    Ptr<LSDAdvance> d = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, s.endpointDistance, s.mergeThreshold);
-    d->setLengthThreshold(s.threshold);
+    Ptr<LSDAdvance> d = createLSDAdvance();
+    d->setEndpointDistance(s.endpointDistance);
+    d->setMergeThreshold(s.mergeThreshold);
+    d->setLengthThresholdRule(s.threshold);
     d->setMergeStrategy(s.strategy);
     d->setStageOrder(s.order);
     d->setProximityRatio(s.proximityRatio);
@@ -184,18 +187,21 @@ int run(const CommandLine& args)
 
     // The defaults, the paper's configuration and the base detectors alone, on both halves.
     std::printf("\nReferences on both halves (tune / check):\n\n");
-    const Setting paper = { 0, LSDAdvance::LENGTH_THRESHOLD_PAPER, LSDAdvance::MERGE_BASELINES, LSDAdvance::FILTER_THEN_MERGE, 10, 0.6, 0.1, 1.5 };
-    Ptr<LSDAdvance> defaults = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
-    const int defaultBase = defaults->getLsdRefine() == LSD_REFINE_NONE ? 1 : 0;
+    // The paper's preset, each image on its own (alpha = 1), on OpenCV's default LSD set-up (its base).
+    Ptr<LSDAdvance> paper = createLSDAdvance(LSDAdvance::PRESET_PAPER);
+    paper->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
+    Ptr<LSDAdvance> defaults = createLSDAdvance();
+    const int defaultBase = defaults->getLSDParams().refine == LSD_REFINE_NONE ? 1 : 0;
     std::printf("- the defaults (%s base): F %.3f / %.3f\n", kBases[defaultBase].name,
                 evaluate(defaults, base[defaultBase], images, tuneSet).f,
                 evaluate(defaults, base[defaultBase], images, checkSet).f);
-    const Score paperTune = evaluate(detectorFor(paper), base[0], images, tuneSet);
-    const Score paperCheck = evaluate(detectorFor(paper), base[0], images, checkSet);
+    const Score paperTune = evaluate(paper, base[0], images, tuneSet);
+    const Score paperCheck = evaluate(paper, base[0], images, checkSet);
     std::printf("- paper's stages on OpenCV's default LSD: F %.3f / %.3f\n", paperTune.f, paperCheck.f);
     for (size_t b = 0; b < base.size(); b++)
     {
-        Ptr<LSDAdvance> none = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+        Ptr<LSDAdvance> none = createLSDAdvance();
+        none->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);
         none->setMergeStrategy(LSDAdvance::MERGE_NONE);
         std::printf("- %s alone: F %.3f / %.3f\n", kBases[b].name, evaluate(none, base[b], images, tuneSet).f,
                     evaluate(none, base[b], images, checkSet).f);

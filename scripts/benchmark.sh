@@ -41,8 +41,8 @@ PEER=""
 [ "$PEER_ARG" = "-DLSD_ADVANCE_ELSED_DIR=" ] || PEER=",elsed"
 STILL="lsd,fld,fld_merge,edlines$PEER,plvins,lsdadvance_paper,lsdadvance_base,lsdadvance"
 MATCHING="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_merge,lsdadvance"
-SEQUENCE="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_filter,lsdadvance_alpha1,lsdadvance,lsdadvance_continuous,lsdadvance_tracking"
-BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance"
+SEQUENCE="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_filter,lsdadvance,lsdadvance_interframe,lsdadvance_continuous,lsdadvance_tracking,lsdadvance_sequence"
+BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance,lsdadvance_sequence"
 
 echo "### YorkUrban-LineSegment, all 51 images"
 echo

@@ -41,7 +41,7 @@ namespace {
 class LsdBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit LsdBase(const LsdParams& p)
+    explicit LsdBase(const LSDAdvance::LSDParams& p)
         : lsd(createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
                                         p.logEps, p.densityThreshold, p.numBins))
     {}
@@ -54,7 +54,7 @@ private:
 class FastLsdBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit FastLsdBase(const LsdParams& p) : lsd(p) {}
+    explicit FastLsdBase(const LSDAdvance::LSDParams& p) : lsd(p) {}
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE { lsd.detect(gray, segments); }
 
 private:
@@ -65,7 +65,7 @@ private:
 class FldBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit FldBase(const FldParams& p)
+    explicit FldBase(const LSDAdvance::FLDParams& p)
         : fld(createFastLineDetector(p.lengthThreshold, (float)p.distanceThreshold, p.cannyThreshold1,
                                      p.cannyThreshold2, p.cannyApertureSize, p.doMerge))
     {}
@@ -88,20 +88,7 @@ private:
 class EdLinesBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit EdLinesBase(const EdParams& p) : ed(createEdgeDrawing())
-    {
-        ed->params.EdgeDetectionOperator = p.gradientOperator;
-        ed->params.GradientThresholdValue = p.gradientThreshold;
-        ed->params.AnchorThresholdValue = p.anchorThreshold;
-        ed->params.ScanInterval = p.scanInterval;
-        ed->params.MinPathLength = p.minPathLength;
-        ed->params.Sigma = (float)p.sigma;
-        ed->params.NFAValidation = p.nfaValidation;
-        ed->params.MinLineLength = p.minLineLength;
-        ed->params.LineFitErrorThreshold = p.lineFitErrorThreshold;
-        ed->params.MaxDistanceBetweenTwoLines = p.maxDistanceBetweenTwoLines;
-        ed->params.MaxErrorThreshold = p.maxErrorThreshold;
-    }
+    explicit EdLinesBase(const EdgeDrawing::Params& p) : ed(createEdgeDrawing()) { ed->setParams(p); }
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
     {
         ed->detectEdges(gray);
@@ -115,19 +102,21 @@ private:
 
 } // namespace
 
-Ptr<BaseSegmentDetector> createBaseDetector(BaseKind kind, const LsdParams& lsd, const FldParams& fld,
-                                            const EdParams& ed)
+Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
+                                            const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines)
 {
     switch (kind)
     {
-    case BaseKind::FLD:
+    case LSDAdvance::BASE_LSD:
+        return makePtr<LsdBase>(lsd);
+    case LSDAdvance::BASE_FLD:
         return makePtr<FldBase>(fld);
-    case BaseKind::EDLINES:
-        return makePtr<EdLinesBase>(ed);
-    case BaseKind::FAST_LSD:
+    case LSDAdvance::BASE_EDLINES:
+        return makePtr<EdLinesBase>(edLines);
+    case LSDAdvance::BASE_FAST_LSD:
         return makePtr<FastLsdBase>(lsd);
     default:
-        return makePtr<LsdBase>(lsd);
+        CV_Error_(Error::StsOutOfRange, ("unknown base detector %d", kind));
     }
 }
 

@@ -12,6 +12,7 @@
 
 namespace cv {
 namespace ximgproc {
+namespace line_evaluation {
 
 namespace {
 
@@ -342,4 +343,4 @@ std::vector<HomographyPair> loadHomographyPairs(const String& folder)
     return pairs;
 }
 
-}} // namespace cv::ximgproc
+}}} // namespace cv::ximgproc::line_evaluation

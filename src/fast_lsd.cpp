@@ -105,7 +105,7 @@ inline double squaredDistance(double x1, double y1, double x2, double y2)
 
 } // namespace
 
-FastLsd::FastLsd(const LsdParams& p)
+FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
     : refine(p.refine), scale(p.scale), sigmaScale(p.sigmaScale), quant(p.quant),
       angleTolerance(p.angleTolerance), logEps(p.logEps), densityThreshold(p.densityThreshold),
       numBins(p.numBins)

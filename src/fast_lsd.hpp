@@ -9,14 +9,12 @@
 #ifndef OPENCV_LSD_ADVANCE_FAST_LSD_HPP
 #define OPENCV_LSD_ADVANCE_FAST_LSD_HPP
 
-#include "opencv2/core.hpp"
+#include "opencv2/lsd_advance/lsd_advance.hpp"
 #include <vector>
 
 namespace cv {
 namespace ximgproc {
 namespace lsda {
-
-struct LsdParams;
 
 //! The LSD algorithm with OpenCV's LineSegmentDetector parameters and output convention (segments
 //! (x1, y1, x2, y2), pixel centres at integer coordinates, brighter side on the left). Every buffer
@@ -25,7 +23,7 @@ struct LsdParams;
 class CV_EXPORTS FastLsd
 {
 public:
-    explicit FastLsd(const LsdParams& params);
+    explicit FastLsd(const LSDAdvance::LSDParams& params);
     //! Segments of a CV_8UC1 image.
     void detect(const Mat& gray, std::vector<Vec4f>& segments);
 

@@ -66,7 +66,7 @@ namespace {
 
 // The rule on values given by their sum, sum of squares and count (mean, population standard
 // deviation), times alpha; 0 for no values.
-double thresholdOf(double sum, double sumSq, double n, double alpha, LengthThreshold rule)
+double thresholdOf(double sum, double sumSq, double n, double alpha, int rule)
 {
     if (n <= 0)
         return 0.0;
@@ -74,7 +74,7 @@ double thresholdOf(double sum, double sumSq, double n, double alpha, LengthThres
     if (mean <= 0.0)
         return 0.0;
     const double stddev = std::sqrt(std::max(sumSq / n - mean * mean, 0.0));
-    if (rule == LengthThreshold::CAPPED)
+    if (rule == LSDAdvance::LENGTH_THRESHOLD_CAPPED)
         return std::min(mean, stddev) * alpha;
     return std::max((1.0 - std::abs(mean - stddev) / mean) * mean * alpha, 0.0);
 }
@@ -92,7 +92,7 @@ void checkResponses(const std::vector<Vec4f>& segments, const std::vector<float>
 
 } // namespace
 
-double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, LengthThreshold rule)
+double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, int rule)
 {
     double sum = 0.0, sumSq = 0.0;
     for (const Vec4f& s : segments)
@@ -104,7 +104,7 @@ double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha, Lengt
     return thresholdOf(sum, sumSq, (double)segments.size(), alpha, rule);
 }
 
-double adaptiveMinResponse(const std::vector<float>& responses, double alpha, LengthThreshold rule)
+double adaptiveMinResponse(const std::vector<float>& responses, double alpha, int rule)
 {
     double sum = 0.0, sumSq = 0.0;
     for (float r : responses)
@@ -116,20 +116,26 @@ double adaptiveMinResponse(const std::vector<float>& responses, double alpha, Le
 }
 
 void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
-                       std::vector<Vec4f>& kept)
+                       std::vector<Vec4f>& kept, std::vector<int>* keptFrom)
 {
-    keepLongOrStrong(segments, std::vector<float>(), minLength, 0.0, kept);
+    keepLongOrStrong(segments, std::vector<float>(), minLength, 0.0, kept, keptFrom);
 }
 
 void keepLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
-                      double minLength, double minResponse, std::vector<Vec4f>& kept)
+                      double minLength, double minResponse, std::vector<Vec4f>& kept, std::vector<int>* keptFrom)
 {
     checkResponses(segments, responses);
     kept.clear();
     kept.reserve(segments.size());
+    if (keptFrom)
+        keptFrom->clear();
     for (size_t i = 0; i < segments.size(); i++)
         if (longOrStrong(segments, responses, i, minLength, minResponse))
+        {
             kept.push_back(segments[i]);
+            if (keptFrom)
+                keptFrom->push_back((int)i);
+        }
 }
 
 int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,

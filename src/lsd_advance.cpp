@@ -2,12 +2,14 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// LSDAdvance: parameters and their validation, persistence, sequence state, and the order of
-// the stages. The stages themselves are in length_filter.cpp, segment_grouping.cpp and
-// segment_merging.cpp.
+// LSDAdvance: its parameters (the tables of parameters.hpp), presets, sequence state, the order
+// of the stages and what they leave for getLastStageOutputs() and getLastSources(). The stages
+// themselves are in length_filter.cpp, segment_grouping.cpp, segment_merging.cpp and
+// image_clipping.cpp.
 
 #include "precomp.hpp"
-#include "opencv2/ximgproc/edge_drawing.hpp"  // EdgeDrawing::GradientOperator
+#include "parameters.hpp"
+#include "segment_merging.hpp"
 
 namespace cv {
 namespace ximgproc {
@@ -18,80 +20,69 @@ namespace {
 // within 32 bits.
 constexpr double kMaxCoordinate = 1e7;
 
-// The valid range of a parameter; the bounds are excluded where loOpen / hiOpen.
-struct ParamRange
-{
-    const char* name;
-    double lo;
-    bool loOpen;
-    double hi;
-    bool hiOpen;
-    const char* unit;
-};
-
-constexpr ParamRange kLsdScale = { "lsdScale", 0, true, 1, false, "" };
-constexpr ParamRange kLsdSigmaScale = { "lsdSigmaScale", 0, true, 100, false, "" };
-constexpr ParamRange kLsdQuant = { "lsdQuant", 0, false, 255, false, "" };
-constexpr ParamRange kLsdAngleTolerance = { "lsdAngleTolerance", 0, true, 180, true, " deg" };
-constexpr ParamRange kLsdLogEps = { "lsdLogEps", -1000, false, 1000, false, "" };
-constexpr ParamRange kLsdDensityThreshold = { "lsdDensityThreshold", 0, false, 1, true, "" };
-constexpr ParamRange kLsdNumBins = { "lsdNumBins", 1, false, 65536, false, "" };
-constexpr ParamRange kFldLengthThreshold = { "fldLengthThreshold", 1, false, 100000, false, " px" };
-constexpr ParamRange kFldDistanceThreshold = { "fldDistanceThreshold", 0, true, 100, false, " px" };
-constexpr ParamRange kFldCannyThreshold1 = { "fldCannyThreshold1", 0, true, 100000, false, "" };
-constexpr ParamRange kFldCannyThreshold2 = { "fldCannyThreshold2", 0, true, 100000, false, "" };
-constexpr ParamRange kEdGradientThreshold = { "edGradientThreshold", 1, false, 10000, false, "" };
-constexpr ParamRange kEdAnchorThreshold = { "edAnchorThreshold", 0, false, 10000, false, "" };
-constexpr ParamRange kEdScanInterval = { "edScanInterval", 1, false, 100, false, "" };
-constexpr ParamRange kEdMinPathLength = { "edMinPathLength", 2, false, 100000, false, " px" };
-constexpr ParamRange kEdSigma = { "edSigma", 0, false, 100, false, "" };
-constexpr ParamRange kEdMinLineLength = { "edMinLineLength (or -1: from the image size)", 9, false, 100000, false, " px" };
-constexpr ParamRange kEdLineFitErrorThreshold = { "edLineFitErrorThreshold", 0, true, 100, false, " px" };
-constexpr ParamRange kEdMaxDistanceBetweenTwoLines = { "edMaxDistanceBetweenTwoLines", 0, true, 1000, false, " px" };
-constexpr ParamRange kEdMaxErrorThreshold = { "edMaxErrorThreshold", 0, true, 100, false, " px" };
-constexpr ParamRange kAngleBinWidth = { "angleBinWidth", 1, false, 90, false, " deg" };
-constexpr ParamRange kEndpointDistance = { "endpointDistance", 0.1, false, 200, false, " px" };
-constexpr ParamRange kBaselineRatio = { "baselineRatio", 0, true, 1, false, "" };
-constexpr ParamRange kDirectionWeight = { "directionWeight", 0, false, 1, false, "" };
-constexpr ParamRange kProximityWeight = { "proximityWeight", 0, false, 1, false, "" };
-constexpr ParamRange kLengthWeight = { "lengthWeight", 0, false, 1, false, "" };
-constexpr ParamRange kProximityRatio = { "proximityRatio", 0, true, 10, false, "" };
-constexpr ParamRange kMergeThreshold = { "mergeThreshold", 0, false, 1, false, "" };
-constexpr ParamRange kMaxPerpendicularOffset = { "maxPerpendicularOffset", 0, false, 100, false, " px" };
-constexpr ParamRange kLengthThresholdScale = { "lengthThresholdScale", 0, true, 10, false, "" };
-
-// Validates value against its range (finite, inside the bounds) and stores it.
-template <typename T>
-void assign(T& field, T value, const ParamRange& r)
-{
-    const double v = (double)value;
-    const bool ok = std::isfinite(v) && (r.loOpen ? v > r.lo : v >= r.lo) &&
-                    (r.hiOpen ? v < r.hi : v <= r.hi);
-    if (!ok)
-        CV_Error_(Error::StsOutOfRange,
-                  ("LSDAdvance: %s must be a finite number in %c%g, %g%c%s, got %.10g", r.name,
-                   r.loOpen ? '(' : '[', r.lo, r.hi, r.hiOpen ? ')' : ']', r.unit, v));
-    field = value;
-}
-
-// Validates an enumerated value (first..last) and stores it.
-void assignEnum(int& field, int value, const char* name, int first, int last, const char* names)
-{
-    if (value < first || value > last)
-        CV_Error_(Error::StsOutOfRange,
-                  ("LSDAdvance: %s must be one of %s (%d..%d), got %d", name, names, first, last, value));
-    field = value;
-}
-
 double elapsedMs(int64 since)
 {
     return (double)(getTickCount() - since) * 1000.0 / getTickFrequency();
 }
 
+// The preset's parameters: the defaults (the tables of parameters.hpp), then what the preset
+// changes. The most accurate configuration is the defaults; the fastest is the base named here.
+lsda::Parameters presetParameters(int preset)
+{
+    lsda::Parameters p;
+    switch (preset)
+    {
+    case LSDAdvance::PRESET_MOST_ACCURATE:
+        break;
+    case LSDAdvance::PRESET_FASTEST:
+        p.own.baseDetector = LSDAdvance::BASE_EDLINES;
+        break;
+    case LSDAdvance::PRESET_PAPER:
+        // OpenCV's LSD with its own set-up (createLineSegmentDetector's defaults), the paper's base.
+        p.own.baseDetector = LSDAdvance::BASE_LSD;
+        p.lsd.refine = LSD_REFINE_STD;
+        p.lsd.scale = 0.8;
+        p.own.lengthFilterMode = LSDAdvance::LENGTH_FILTER_INTERFRAME;
+        p.own.lengthThresholdRule = LSDAdvance::LENGTH_THRESHOLD_PAPER;
+        p.own.stageOrder = LSDAdvance::FILTER_THEN_MERGE;
+        p.own.mergeStrategy = LSDAdvance::MERGE_BASELINES;
+        p.own.proximityRatio = 0.1;
+        break;
+    case LSDAdvance::PRESET_SEQUENCE:
+        p.own.lengthFilterMode = LSDAdvance::LENGTH_FILTER_COUNT_TRACKING;
+        // A front end keeps its N best lines: short strong ones give it more correct LBD matches
+        // at an equal line budget (doc/matching.md).
+        p.own.keepStrongSegments = true;
+        break;
+    default:
+        CV_Error_(Error::StsOutOfRange, ("createLSDAdvance: preset must be %s, got %d",
+                                         lsda::Range::enumOf(lsda::kPresets).describe().c_str(), preset));
+    }
+    return p;
+}
+
+// Replaces, for each base segment, the index of the segment of the last stage it is part of by
+// that of the next stage: `into` maps the last stage's segments to the next's (-1: dropped).
+void followStage(std::vector<int>& partOf, const std::vector<int>& into)
+{
+    for (int& k : partOf)
+        k = k < 0 ? -1 : into[k];
+}
+
+// The same for a stage that keeps a subsequence: keptFrom[j] is the index of its j-th segment
+// in its input of inputSize segments.
+void followKept(std::vector<int>& partOf, const std::vector<int>& keptFrom, int inputSize, std::vector<int>& into)
+{
+    into.assign(inputSize, -1);
+    for (size_t j = 0; j < keptFrom.size(); j++)
+        into[keptFrom[j]] = (int)j;
+    followStage(partOf, into);
+}
+
 class LSDAdvanceImpl CV_FINAL : public LSDAdvance
 {
 public:
-    LSDAdvanceImpl() {}
+    explicit LSDAdvanceImpl(const lsda::Parameters& p) : parameters(p) {}
     // Not copyable: frame holds pointers into itself.
     LSDAdvanceImpl(const LSDAdvanceImpl&) = delete;
     LSDAdvanceImpl& operator=(const LSDAdvanceImpl&) = delete;
@@ -102,25 +93,44 @@ public:
         const int64 start = getTickCount();
         const Mat gray = lsda::toGray8U(image);
         if (!baseSegments)
-            baseSegments = lsda::createBaseDetector((lsda::BaseKind)baseDetector, lsd, fld, ed);
+            baseSegments = lsda::createBaseDetector(parameters.own.baseDetector, parameters.lsd, parameters.fld,
+                                                    parameters.edLines);
         // LSD's resize throws on an image that scales to no pixel; such an image has no segment.
-        if (baseDetector != BASE_LSD ||
-            (saturate_cast<int>(gray.cols * lsd.scale) > 0 && saturate_cast<int>(gray.rows * lsd.scale) > 0))
+        const double scale = parameters.lsd.scale;
+        if (parameters.own.baseDetector != BASE_LSD ||
+            (saturate_cast<int>(gray.cols * scale) > 0 && saturate_cast<int>(gray.rows * scale) > 0))
             baseSegments->detect(gray, frame.incoming);
         else
             frame.incoming.clear();
         runStages(elapsedMs(start), &gray, lines);
     }
 
-    void processSegments(InputArray segments, OutputArray lines) CV_OVERRIDE
+    void processSegments(InputArray segments, OutputArray lines, Size imageSize) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
+        CV_CheckGE(imageSize.width, 0, "LSDAdvance::processSegments: imageSize is empty or positive");
+        CV_CheckGE(imageSize.height, 0, "LSDAdvance::processSegments: imageSize is empty or positive");
         lsda::toSegments(segments, "LSDAdvance::processSegments: segments", frame.incoming);
         if (!checkRange(Mat(frame.incoming), true, nullptr, -kMaxCoordinate, kMaxCoordinate))
             CV_Error_(Error::StsOutOfRange,
                       ("LSDAdvance::processSegments: segment coordinates must be finite and within "
                        "[-%g, %g) px", kMaxCoordinate, kMaxCoordinate));
-        runStages(0.0, nullptr, lines);
+        runStages(0.0, nullptr, lines, imageSize);
+    }
+
+    void drawSegments(InputOutputArray image, InputArray lines) CV_OVERRIDE
+    {
+        CV_INSTRUMENT_REGION();
+        if (image.empty() || image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3))
+            CV_Error_(Error::StsBadArg, ("LSDAdvance::drawSegments: image must be a non-empty CV_8UC1 or CV_8UC3 "
+                                         "image, got %s %dx%d", typeToString(image.type()).c_str(), image.cols(),
+                                         image.rows()));
+        const std::vector<Vec4f> segments = lsda::toSegments(lines, "LSDAdvance::drawSegments: lines");
+        if (image.channels() == 1)
+            cvtColor(image, image, COLOR_GRAY2BGR);
+        Mat canvas = image.getMat();
+        for (const Vec4f& s : segments)
+            line(canvas, Point2f(s[0], s[1]), Point2f(s[2], s[3]), Scalar(0, 0, 255), 1);
     }
 
     void reset() CV_OVERRIDE
@@ -158,269 +168,124 @@ public:
         Mat(labels).copyTo(groupLabels);
     }
 
-    void setLsdRefine(int v) CV_OVERRIDE
+    void getLastSources(OutputArrayOfArrays sources) const CV_OVERRIDE
     {
-        assignEnum(lsd.refine, v, "lsdRefine", LSD_REFINE_NONE, LSD_REFINE_ADV,
-                   "LSD_REFINE_NONE, LSD_REFINE_STD, LSD_REFINE_ADV");
-        baseDetectorChanged();
+        CV_INSTRUMENT_REGION();
+        const size_t lineCount = frame.lines ? frame.lines->size() : 0;
+        std::vector<int> count(lineCount, 0);
+        for (int line : frame.lineOf)
+            if (line >= 0)
+                count[line]++;
+        sources.create((int)lineCount, 1, CV_32S);
+        std::vector<Mat> lists(lineCount);
+        for (size_t j = 0; j < lists.size(); j++)
+        {
+            sources.create(count[j], 1, CV_32S, (int)j);
+            lists[j] = sources.getMat((int)j);
+            count[j] = 0;
+        }
+        for (size_t i = 0; i < frame.lineOf.size(); i++)
+        {
+            const int j = frame.lineOf[i];
+            if (j >= 0)
+                lists[j].at<int>(count[j]++) = (int)i;
+        }
     }
-    int getLsdRefine() const CV_OVERRIDE { return lsd.refine; }
-    void setLsdScale(double v) CV_OVERRIDE { assign(lsd.scale, v, kLsdScale); baseDetectorChanged(); }
-    double getLsdScale() const CV_OVERRIDE { return lsd.scale; }
-    void setLsdSigmaScale(double v) CV_OVERRIDE { assign(lsd.sigmaScale, v, kLsdSigmaScale); baseDetectorChanged(); }
-    double getLsdSigmaScale() const CV_OVERRIDE { return lsd.sigmaScale; }
-    void setLsdQuant(double v) CV_OVERRIDE { assign(lsd.quant, v, kLsdQuant); baseDetectorChanged(); }
-    double getLsdQuant() const CV_OVERRIDE { return lsd.quant; }
-    void setLsdAngleTolerance(double v) CV_OVERRIDE { assign(lsd.angleTolerance, v, kLsdAngleTolerance); baseDetectorChanged(); }
-    double getLsdAngleTolerance() const CV_OVERRIDE { return lsd.angleTolerance; }
-    void setLsdLogEps(double v) CV_OVERRIDE { assign(lsd.logEps, v, kLsdLogEps); baseDetectorChanged(); }
-    double getLsdLogEps() const CV_OVERRIDE { return lsd.logEps; }
-    void setLsdDensityThreshold(double v) CV_OVERRIDE { assign(lsd.densityThreshold, v, kLsdDensityThreshold); baseDetectorChanged(); }
-    double getLsdDensityThreshold() const CV_OVERRIDE { return lsd.densityThreshold; }
-    void setLsdNumBins(int v) CV_OVERRIDE { assign(lsd.numBins, v, kLsdNumBins); baseDetectorChanged(); }
-    int getLsdNumBins() const CV_OVERRIDE { return lsd.numBins; }
 
-    void setBaseDetector(int v) CV_OVERRIDE
+    Params getParams() const CV_OVERRIDE { return parameters.own; }
+    void setParams(const Params& p) CV_OVERRIDE
     {
-        assignEnum(baseDetector, v, "baseDetector", BASE_LSD, BASE_FAST_LSD,
-                   "BASE_LSD, BASE_FLD, BASE_EDLINES, BASE_FAST_LSD");
-        baseDetectorChanged();
-    }
-    int getBaseDetector() const CV_OVERRIDE { return baseDetector; }
-
-    void setFldLengthThreshold(int v) CV_OVERRIDE { assign(fld.lengthThreshold, v, kFldLengthThreshold); baseDetectorChanged(); }
-    int getFldLengthThreshold() const CV_OVERRIDE { return fld.lengthThreshold; }
-    void setFldDistanceThreshold(double v) CV_OVERRIDE { assign(fld.distanceThreshold, v, kFldDistanceThreshold); baseDetectorChanged(); }
-    double getFldDistanceThreshold() const CV_OVERRIDE { return fld.distanceThreshold; }
-    void setFldCannyThreshold1(double v) CV_OVERRIDE { assign(fld.cannyThreshold1, v, kFldCannyThreshold1); baseDetectorChanged(); }
-    double getFldCannyThreshold1() const CV_OVERRIDE { return fld.cannyThreshold1; }
-    void setFldCannyThreshold2(double v) CV_OVERRIDE { assign(fld.cannyThreshold2, v, kFldCannyThreshold2); baseDetectorChanged(); }
-    double getFldCannyThreshold2() const CV_OVERRIDE { return fld.cannyThreshold2; }
-    void setFldCannyApertureSize(int v) CV_OVERRIDE
-    {
-        if (v != 3 && v != 5 && v != 7)
-            CV_Error_(Error::StsOutOfRange, ("LSDAdvance: fldCannyApertureSize must be 3, 5 or 7, got %d", v));
-        fld.cannyApertureSize = v;
-        baseDetectorChanged();
-    }
-    int getFldCannyApertureSize() const CV_OVERRIDE { return fld.cannyApertureSize; }
-    void setFldDoMerge(bool v) CV_OVERRIDE { fld.doMerge = v; baseDetectorChanged(); }
-    bool getFldDoMerge() const CV_OVERRIDE { return fld.doMerge; }
-
-    void setEdGradientOperator(int v) CV_OVERRIDE
-    {
-        assignEnum(ed.gradientOperator, v, "edGradientOperator", EdgeDrawing::PREWITT,
-                   EdgeDrawing::LSD, "PREWITT, SOBEL, SCHARR, LSD of EdgeDrawing::GradientOperator");
-        baseDetectorChanged();
-    }
-    int getEdGradientOperator() const CV_OVERRIDE { return ed.gradientOperator; }
-    void setEdGradientThreshold(int v) CV_OVERRIDE { assign(ed.gradientThreshold, v, kEdGradientThreshold); baseDetectorChanged(); }
-    int getEdGradientThreshold() const CV_OVERRIDE { return ed.gradientThreshold; }
-    void setEdAnchorThreshold(int v) CV_OVERRIDE { assign(ed.anchorThreshold, v, kEdAnchorThreshold); baseDetectorChanged(); }
-    int getEdAnchorThreshold() const CV_OVERRIDE { return ed.anchorThreshold; }
-    void setEdScanInterval(int v) CV_OVERRIDE { assign(ed.scanInterval, v, kEdScanInterval); baseDetectorChanged(); }
-    int getEdScanInterval() const CV_OVERRIDE { return ed.scanInterval; }
-    void setEdMinPathLength(int v) CV_OVERRIDE { assign(ed.minPathLength, v, kEdMinPathLength); baseDetectorChanged(); }
-    int getEdMinPathLength() const CV_OVERRIDE { return ed.minPathLength; }
-    void setEdSigma(double v) CV_OVERRIDE { assign(ed.sigma, v, kEdSigma); baseDetectorChanged(); }
-    double getEdSigma() const CV_OVERRIDE { return ed.sigma; }
-    void setEdNfaValidation(bool v) CV_OVERRIDE { ed.nfaValidation = v; baseDetectorChanged(); }
-    bool getEdNfaValidation() const CV_OVERRIDE { return ed.nfaValidation; }
-    void setEdMinLineLength(int v) CV_OVERRIDE
-    {
-        if (v != -1)
-            assign(ed.minLineLength, v, kEdMinLineLength);
-        ed.minLineLength = v;
-        baseDetectorChanged();
-    }
-    int getEdMinLineLength() const CV_OVERRIDE { return ed.minLineLength; }
-    void setEdLineFitErrorThreshold(double v) CV_OVERRIDE { assign(ed.lineFitErrorThreshold, v, kEdLineFitErrorThreshold); baseDetectorChanged(); }
-    double getEdLineFitErrorThreshold() const CV_OVERRIDE { return ed.lineFitErrorThreshold; }
-    void setEdMaxDistanceBetweenTwoLines(double v) CV_OVERRIDE
-    {
-        assign(ed.maxDistanceBetweenTwoLines, v, kEdMaxDistanceBetweenTwoLines);
-        baseDetectorChanged();
-    }
-    double getEdMaxDistanceBetweenTwoLines() const CV_OVERRIDE { return ed.maxDistanceBetweenTwoLines; }
-    void setEdMaxErrorThreshold(double v) CV_OVERRIDE { assign(ed.maxErrorThreshold, v, kEdMaxErrorThreshold); baseDetectorChanged(); }
-    double getEdMaxErrorThreshold() const CV_OVERRIDE { return ed.maxErrorThreshold; }
-
-    void setLengthFilterMode(int v) CV_OVERRIDE
-    {
-        assignEnum(lengthFilterMode, v, "lengthFilterMode", LENGTH_FILTER_NONE, LENGTH_FILTER_COUNT_TRACKING,
-                   "LENGTH_FILTER_NONE, LENGTH_FILTER_ADAPTIVE, LENGTH_FILTER_INTERFRAME, "
-                   "LENGTH_FILTER_INTERFRAME_CONTINUOUS, LENGTH_FILTER_COUNT_TRACKING");
+        lsda::validate(p);
+        if (p.baseDetector != parameters.own.baseDetector)
+            baseSegments.release();
+        parameters.own = p;
         reset();
     }
-    int getLengthFilterMode() const CV_OVERRIDE { return lengthFilterMode; }
+    LSDParams getLSDParams() const CV_OVERRIDE { return parameters.lsd; }
+    void setLSDParams(const LSDParams& p) CV_OVERRIDE { setBase(parameters.lsd, p); }
+    FLDParams getFLDParams() const CV_OVERRIDE { return parameters.fld; }
+    void setFLDParams(const FLDParams& p) CV_OVERRIDE { setBase(parameters.fld, p); }
+    EdgeDrawing::Params getEDLinesParams() const CV_OVERRIDE { return parameters.edLines; }
+    void setEDLinesParams(const EdgeDrawing::Params& p) CV_OVERRIDE { setBase(parameters.edLines, p); }
 
-    void setLengthThreshold(int v) CV_OVERRIDE
-    {
-        int rule;
-        assignEnum(rule, v, "lengthThreshold", LENGTH_THRESHOLD_PAPER, LENGTH_THRESHOLD_CAPPED,
-                   "LENGTH_THRESHOLD_PAPER, LENGTH_THRESHOLD_CAPPED");
-        lengthThreshold = (lsda::LengthThreshold)rule;
-        reset();
-    }
-    int getLengthThreshold() const CV_OVERRIDE { return (int)lengthThreshold; }
-    void setLengthThresholdScale(double v) CV_OVERRIDE { assign(lengthThresholdScale, v, kLengthThresholdScale); reset(); }
-    double getLengthThresholdScale() const CV_OVERRIDE { return lengthThresholdScale; }
-    void setKeepStrongSegments(bool v) CV_OVERRIDE { keepStrongSegments = v; reset(); }
-    bool getKeepStrongSegments() const CV_OVERRIDE { return keepStrongSegments; }
-
-    void setMergeStrategy(int v) CV_OVERRIDE
-    {
-        int strategy;
-        assignEnum(strategy, v, "mergeStrategy", MERGE_NONE, MERGE_LONGEST_FIRST,
-                   "MERGE_NONE, MERGE_BASELINES, MERGE_LONGEST_FIRST");
-        merging.strategy = (lsda::MergeStrategy)strategy;
-        reset();
-    }
-    int getMergeStrategy() const CV_OVERRIDE { return (int)merging.strategy; }
-    void setStageOrder(int v) CV_OVERRIDE
-    {
-        assignEnum(stageOrder, v, "stageOrder", FILTER_THEN_MERGE, MERGE_THEN_FILTER,
-                   "FILTER_THEN_MERGE, MERGE_THEN_FILTER");
-        reset();
-    }
-    int getStageOrder() const CV_OVERRIDE { return stageOrder; }
-
-    void setAngleBinWidth(double v) CV_OVERRIDE { assign(grouping.angleBinWidth, v, kAngleBinWidth); reset(); }
-    double getAngleBinWidth() const CV_OVERRIDE { return grouping.angleBinWidth; }
-    void setAngleBinning(int v) CV_OVERRIDE
-    {
-        int binning;
-        assignEnum(binning, v, "angleBinning", ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS,
-                   "ANGLE_BINS_STRICT, ANGLE_BINS_NEIGHBOURS");
-        grouping.neighbourBins = binning == ANGLE_BINS_NEIGHBOURS;
-        reset();
-    }
-    int getAngleBinning() const CV_OVERRIDE
-    {
-        return grouping.neighbourBins ? ANGLE_BINS_NEIGHBOURS : ANGLE_BINS_STRICT;
-    }
-    void setEndpointDistance(double v) CV_OVERRIDE { assign(grouping.endpointDistance, v, kEndpointDistance); reset(); }
-    double getEndpointDistance() const CV_OVERRIDE { return grouping.endpointDistance; }
-
-    void setBaselineRatio(double v) CV_OVERRIDE { assign(merging.baselineRatio, v, kBaselineRatio); reset(); }
-    double getBaselineRatio() const CV_OVERRIDE { return merging.baselineRatio; }
-    void setDirectionWeight(double v) CV_OVERRIDE { assign(merging.directionWeight, v, kDirectionWeight); reset(); }
-    double getDirectionWeight() const CV_OVERRIDE { return merging.directionWeight; }
-    void setProximityWeight(double v) CV_OVERRIDE { assign(merging.proximityWeight, v, kProximityWeight); reset(); }
-    double getProximityWeight() const CV_OVERRIDE { return merging.proximityWeight; }
-    void setLengthWeight(double v) CV_OVERRIDE { assign(merging.lengthWeight, v, kLengthWeight); reset(); }
-    double getLengthWeight() const CV_OVERRIDE { return merging.lengthWeight; }
-    void setProximityRatio(double v) CV_OVERRIDE { assign(merging.proximityRatio, v, kProximityRatio); reset(); }
-    double getProximityRatio() const CV_OVERRIDE { return merging.proximityRatio; }
-    void setMergeThreshold(double v) CV_OVERRIDE { assign(merging.mergeThreshold, v, kMergeThreshold); reset(); }
-    double getMergeThreshold() const CV_OVERRIDE { return merging.mergeThreshold; }
-    void setMaxPerpendicularOffset(double v) CV_OVERRIDE { assign(merging.maxPerpendicularOffset, v, kMaxPerpendicularOffset); reset(); }
-    double getMaxPerpendicularOffset() const CV_OVERRIDE { return merging.maxPerpendicularOffset; }
+    // A getter and a setter per row of the table; the setter validates through setParams().
+#define LSDA_ACCESSORS(type, field, Accessor, value, range, legacyKey) \
+    void set##Accessor(type v) CV_OVERRIDE                                  \
+    {                                                                       \
+        Params p = parameters.own;                                          \
+        p.field = v;                                                        \
+        setParams(p);                                                       \
+    }                                                                       \
+    type get##Accessor() const CV_OVERRIDE { return parameters.own.field; }
+    LSDA_PARAMS(LSDA_ACCESSORS)
+#undef LSDA_ACCESSORS
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
         writeFormat(fs);
-        for (const IntParam& p : intParams())
-            fs << p.name << (this->*p.get)();
-        for (const RealParam& p : realParams())
-            fs << p.name << (this->*p.get)();
-        for (const BoolParam& p : boolParams())
-            fs << p.name << (int)(this->*p.get)();
+        lsda::writeParameters(fs, parameters);
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
     {
-        // Validity does not depend on other parameters: checking every value on a scratch object
-        // first means a bad file throws before this object changes.
-        LSDAdvanceImpl scratch;
-        scratch.apply(fn);
-        apply(fn);
+        lsda::Parameters p = parameters;
+        lsda::readParameters(fn, p);  // validates every value before changing p
+        parameters = p;
+        baseSegments.release();
+        reset();
     }
 
     String getDefaultName() const CV_OVERRIDE { return "LSDAdvance"; }
 
 private:
-    void apply(const FileNode& fn)
+    template <class S>
+    void setBase(S& current, const S& p)
     {
-        for (const IntParam& p : intParams())
-        {
-            const FileNode node = fn[p.name];
-            if (node.empty())
-                continue;
-            if (!node.isInt())
-                CV_Error_(Error::StsParseError,
-                          ("LSDAdvance::read: %s must be an integer", p.name));
-            (this->*p.set)((int)node);
-        }
-        for (const RealParam& p : realParams())
-        {
-            const FileNode node = fn[p.name];
-            if (node.empty())
-                continue;
-            if (!node.isReal() && !node.isInt())
-                CV_Error_(Error::StsParseError, ("LSDAdvance::read: %s must be a number", p.name));
-            (this->*p.set)((double)node);
-        }
-        for (const BoolParam& p : boolParams())
-        {
-            const FileNode node = fn[p.name];
-            if (node.empty())
-                continue;
-            if (!node.isInt() || ((int)node != 0 && (int)node != 1))
-                CV_Error_(Error::StsParseError, ("LSDAdvance::read: %s must be 0 or 1", p.name));
-            (this->*p.set)((int)node != 0);
-        }
+        lsda::validate(p);
+        current = p;
+        baseSegments.release();
+        reset();
     }
 
-    struct IntParam
-    {
-        const char* name;
-        int (LSDAdvanceImpl::*get)() const;
-        void (LSDAdvanceImpl::*set)(int);
-    };
-    struct RealParam
-    {
-        const char* name;
-        double (LSDAdvanceImpl::*get)() const;
-        void (LSDAdvanceImpl::*set)(double);
-    };
-    struct BoolParam  // stored as the integer 0 or 1
-    {
-        const char* name;
-        bool (LSDAdvanceImpl::*get)() const;
-        void (LSDAdvanceImpl::*set)(bool);
-    };
-
     // Stages 1-3 in the configured order on the segments in frame.incoming, which become the
-    // frame's base segments; fills lastStats and the stage outputs of getLastStageOutputs. gray is
-    // the image they come from, nullptr when there is none (processSegments): stage 1 then has no
+    // frame's base segments, then the clipping to the image gray, or to an image of imageSize
+    // when there is no gray (processSegments; none when imageSize is empty); fills lastStats and
+    // what getLastStageOutputs() and getLastSources() return. Without gray, stage 1 has no
     // responses and keeps long segments only.
-    void runStages(double baseMs, const Mat* gray, OutputArray lines)
+    void runStages(double baseMs, const Mat* gray, OutputArray lines, Size imageSize = Size())
     {
+        if (gray)
+            imageSize = gray->size();
         // Only a call that got this far replaces the previous call's stage outputs.
         frame.base.swap(frame.incoming);
         const std::vector<Vec4f>& base = frame.base;
+        const Params& own = parameters.own;
         LSDAdvanceStats stats;
         stats.baseSegments = (int)base.size();
         stats.baseMs = baseMs;
+        frame.lineOf.resize(base.size());
+        for (size_t i = 0; i < base.size(); i++)
+            frame.lineOf[i] = (int)i;
 
         // The threshold always comes from the base segments: after merging, the lengths are
         // no longer those of one detector's output. Every rule is proportional to alpha.
         const int64 t = getTickCount();
-        const bool filtering = lengthFilterMode != LENGTH_FILTER_NONE;
+        const bool filtering = own.lengthFilterMode != LENGTH_FILTER_NONE;
         const double unitMinLength =
-            filtering ? lengthThresholdScale * lsda::adaptiveMinLength(base, 1.0, lengthThreshold) : 0.0;
+            filtering ? own.lengthThresholdScale * lsda::adaptiveMinLength(base, 1.0, own.lengthThresholdRule) : 0.0;
         // The responses of the base segments give the threshold of the strong ones, as their
-        // lengths give the length threshold.
-        const Mat* strongFrom = filtering && keepStrongSegments ? gray : nullptr;
+        // lengths give the length threshold; computed only when strong segments are kept.
+        const Mat* strongFrom = filtering && own.keepStrongSegments ? gray : nullptr;
         frame.baseResponses.clear();
         if (strongFrom)
             lsda::lineResponses(*strongFrom, base, frame.baseResponses);
         const double unitMinResponse =
-            strongFrom ? lengthThresholdScale * lsda::adaptiveMinResponse(frame.baseResponses, 1.0, lengthThreshold) : 0.0;
+            strongFrom ? own.lengthThresholdScale *
+                             lsda::adaptiveMinResponse(frame.baseResponses, 1.0, own.lengthThresholdRule)
+                       : 0.0;
         stats.filterMs = elapsedMs(t);
 
-        if (stageOrder == FILTER_THEN_MERGE)
+        if (own.stageOrder == FILTER_THEN_MERGE)
         {
             frame.filtered = &filterStage(base, frame.baseResponses, unitMinLength, unitMinResponse, stats, frame.work);
             frame.merged = &mergeStage(*frame.filtered, stats, frame.out);
@@ -439,9 +304,15 @@ private:
             }
             frame.filtered = &filterStage(*frame.merged, *responses, unitMinLength, unitMinResponse, stats, frame.out);
         }
-        const std::vector<Vec4f>& out = stageOrder == FILTER_THEN_MERGE ? *frame.merged : *frame.filtered;
-        stats.outputSegments = (int)out.size();
-        Mat(out).copyTo(lines);
+        frame.lines = own.stageOrder == FILTER_THEN_MERGE ? frame.merged : frame.filtered;
+        if (!imageSize.empty())
+        {
+            lsda::clipToImage(*frame.lines, imageSize, frame.clipped, frame.keptFrom);
+            followKept(frame.lineOf, frame.keptFrom, (int)frame.lines->size(), frame.into);
+            frame.lines = &frame.clipped;
+        }
+        stats.outputSegments = (int)frame.lines->size();
+        Mat(*frame.lines).copyTo(lines);
         // The frame counts only once its output is delivered.
         keptCounts[1] = keptCounts[0];
         keptCounts[0] = stats.filteredSegments;
@@ -455,7 +326,7 @@ private:
     {
         if (framesSeen < 2)
             return 1.0;
-        switch (lengthFilterMode)
+        switch (parameters.own.lengthFilterMode)
         {
         case LENGTH_FILTER_INTERFRAME:
             return lsda::interFrameAlpha(keptCounts[0], keptCounts[1]);
@@ -473,16 +344,17 @@ private:
     // are those of in, or empty when short segments are never kept for their response.
     const std::vector<Vec4f>& filterStage(const std::vector<Vec4f>& in, const std::vector<float>& responses,
                                           double unitMinLength, double unitMinResponse, LSDAdvanceStats& stats,
-                                          std::vector<Vec4f>& kept) const
+                                          std::vector<Vec4f>& kept)
     {
         const int64 t = getTickCount();
         const std::vector<Vec4f>* out = &in;
-        if (lengthFilterMode != LENGTH_FILTER_NONE)
+        if (parameters.own.lengthFilterMode != LENGTH_FILTER_NONE)
         {
             stats.alpha = frameAlpha(in, responses, unitMinLength, unitMinResponse);
             stats.minLength = stats.alpha * unitMinLength;
             stats.minResponse = responses.empty() ? 0.0 : stats.alpha * unitMinResponse;
-            lsda::keepLongOrStrong(in, responses, stats.minLength, stats.minResponse, kept);
+            lsda::keepLongOrStrong(in, responses, stats.minLength, stats.minResponse, kept, &frame.keptFrom);
+            followKept(frame.lineOf, frame.keptFrom, (int)in.size(), frame.into);
             out = &kept;
         }
         stats.filteredSegments = (int)out->size();
@@ -494,7 +366,8 @@ private:
     const std::vector<Vec4f>& mergeStage(const std::vector<Vec4f>& in, LSDAdvanceStats& stats,
                                          std::vector<Vec4f>& merged)
     {
-        frame.grouped = merging.strategy != lsda::MergeStrategy::NONE;
+        const Params& own = parameters.own;
+        frame.grouped = own.mergeStrategy != MERGE_NONE;
         if (!frame.grouped)
         {
             stats.mergedSegments = (int)in.size();
@@ -502,98 +375,20 @@ private:
         }
         int64 t = getTickCount();
         lsda::SegmentGroups& groups = frame.groups;
-        lsda::groupSegments(in, grouping, groups, frame.grouping);
+        lsda::groupSegments(in, own, groups, frame.grouping);
         for (int g = 0; g < groups.count(); g++)
             stats.mergeGroups += groups.offsets[g + 1] - groups.offsets[g] > 1;
         stats.groupingMs = elapsedMs(t);
 
         t = getTickCount();
-        lsda::mergeGroups(in, groups, merging, merged, frame.merging);
+        lsda::mergeGroups(in, groups, own, merged, frame.into, frame.merging);
+        followStage(frame.lineOf, frame.into);
         stats.mergedSegments = (int)merged.size();
         stats.mergingMs = elapsedMs(t);
         return merged;
     }
 
-    // The persisted parameters: one table drives write() and read().
-    static const std::vector<IntParam>& intParams()
-    {
-        static const std::vector<IntParam> params = {
-            { "lsdRefine", &LSDAdvanceImpl::getLsdRefine, &LSDAdvanceImpl::setLsdRefine },
-            { "lsdNumBins", &LSDAdvanceImpl::getLsdNumBins, &LSDAdvanceImpl::setLsdNumBins },
-            { "lengthFilterMode", &LSDAdvanceImpl::getLengthFilterMode, &LSDAdvanceImpl::setLengthFilterMode },
-            { "angleBinning", &LSDAdvanceImpl::getAngleBinning, &LSDAdvanceImpl::setAngleBinning },
-            { "lengthThreshold", &LSDAdvanceImpl::getLengthThreshold, &LSDAdvanceImpl::setLengthThreshold },
-            { "mergeStrategy", &LSDAdvanceImpl::getMergeStrategy, &LSDAdvanceImpl::setMergeStrategy },
-            { "stageOrder", &LSDAdvanceImpl::getStageOrder, &LSDAdvanceImpl::setStageOrder },
-            { "baseDetector", &LSDAdvanceImpl::getBaseDetector, &LSDAdvanceImpl::setBaseDetector },
-            { "fldLengthThreshold", &LSDAdvanceImpl::getFldLengthThreshold, &LSDAdvanceImpl::setFldLengthThreshold },
-            { "fldCannyApertureSize", &LSDAdvanceImpl::getFldCannyApertureSize, &LSDAdvanceImpl::setFldCannyApertureSize },
-            { "edGradientOperator", &LSDAdvanceImpl::getEdGradientOperator, &LSDAdvanceImpl::setEdGradientOperator },
-            { "edGradientThreshold", &LSDAdvanceImpl::getEdGradientThreshold, &LSDAdvanceImpl::setEdGradientThreshold },
-            { "edAnchorThreshold", &LSDAdvanceImpl::getEdAnchorThreshold, &LSDAdvanceImpl::setEdAnchorThreshold },
-            { "edScanInterval", &LSDAdvanceImpl::getEdScanInterval, &LSDAdvanceImpl::setEdScanInterval },
-            { "edMinPathLength", &LSDAdvanceImpl::getEdMinPathLength, &LSDAdvanceImpl::setEdMinPathLength },
-            { "edMinLineLength", &LSDAdvanceImpl::getEdMinLineLength, &LSDAdvanceImpl::setEdMinLineLength },
-        };
-        return params;
-    }
-    static const std::vector<RealParam>& realParams()
-    {
-        static const std::vector<RealParam> params = {
-            { "lsdScale", &LSDAdvanceImpl::getLsdScale, &LSDAdvanceImpl::setLsdScale },
-            { "lsdSigmaScale", &LSDAdvanceImpl::getLsdSigmaScale, &LSDAdvanceImpl::setLsdSigmaScale },
-            { "lsdQuant", &LSDAdvanceImpl::getLsdQuant, &LSDAdvanceImpl::setLsdQuant },
-            { "lsdAngleTolerance", &LSDAdvanceImpl::getLsdAngleTolerance, &LSDAdvanceImpl::setLsdAngleTolerance },
-            { "lsdLogEps", &LSDAdvanceImpl::getLsdLogEps, &LSDAdvanceImpl::setLsdLogEps },
-            { "lsdDensityThreshold", &LSDAdvanceImpl::getLsdDensityThreshold, &LSDAdvanceImpl::setLsdDensityThreshold },
-            { "angleBinWidth", &LSDAdvanceImpl::getAngleBinWidth, &LSDAdvanceImpl::setAngleBinWidth },
-            { "endpointDistance", &LSDAdvanceImpl::getEndpointDistance, &LSDAdvanceImpl::setEndpointDistance },
-            { "baselineRatio", &LSDAdvanceImpl::getBaselineRatio, &LSDAdvanceImpl::setBaselineRatio },
-            { "directionWeight", &LSDAdvanceImpl::getDirectionWeight, &LSDAdvanceImpl::setDirectionWeight },
-            { "proximityWeight", &LSDAdvanceImpl::getProximityWeight, &LSDAdvanceImpl::setProximityWeight },
-            { "lengthWeight", &LSDAdvanceImpl::getLengthWeight, &LSDAdvanceImpl::setLengthWeight },
-            { "proximityRatio", &LSDAdvanceImpl::getProximityRatio, &LSDAdvanceImpl::setProximityRatio },
-            { "mergeThreshold", &LSDAdvanceImpl::getMergeThreshold, &LSDAdvanceImpl::setMergeThreshold },
-            { "maxPerpendicularOffset", &LSDAdvanceImpl::getMaxPerpendicularOffset, &LSDAdvanceImpl::setMaxPerpendicularOffset },
-            { "lengthThresholdScale", &LSDAdvanceImpl::getLengthThresholdScale, &LSDAdvanceImpl::setLengthThresholdScale },
-            { "fldDistanceThreshold", &LSDAdvanceImpl::getFldDistanceThreshold, &LSDAdvanceImpl::setFldDistanceThreshold },
-            { "fldCannyThreshold1", &LSDAdvanceImpl::getFldCannyThreshold1, &LSDAdvanceImpl::setFldCannyThreshold1 },
-            { "fldCannyThreshold2", &LSDAdvanceImpl::getFldCannyThreshold2, &LSDAdvanceImpl::setFldCannyThreshold2 },
-            { "edSigma", &LSDAdvanceImpl::getEdSigma, &LSDAdvanceImpl::setEdSigma },
-            { "edLineFitErrorThreshold", &LSDAdvanceImpl::getEdLineFitErrorThreshold, &LSDAdvanceImpl::setEdLineFitErrorThreshold },
-            { "edMaxDistanceBetweenTwoLines", &LSDAdvanceImpl::getEdMaxDistanceBetweenTwoLines, &LSDAdvanceImpl::setEdMaxDistanceBetweenTwoLines },
-            { "edMaxErrorThreshold", &LSDAdvanceImpl::getEdMaxErrorThreshold, &LSDAdvanceImpl::setEdMaxErrorThreshold },
-        };
-        return params;
-    }
-    static const std::vector<BoolParam>& boolParams()
-    {
-        static const std::vector<BoolParam> params = {
-            { "fldDoMerge", &LSDAdvanceImpl::getFldDoMerge, &LSDAdvanceImpl::setFldDoMerge },
-            { "edNfaValidation", &LSDAdvanceImpl::getEdNfaValidation, &LSDAdvanceImpl::setEdNfaValidation },
-            { "keepStrongSegments", &LSDAdvanceImpl::getKeepStrongSegments, &LSDAdvanceImpl::setKeepStrongSegments },
-        };
-        return params;
-    }
-
-    void baseDetectorChanged()
-    {
-        baseSegments.release();
-        reset();
-    }
-
-    lsda::LsdParams lsd;
-    int lengthFilterMode = LENGTH_FILTER_INTERFRAME;
-    int stageOrder = MERGE_THEN_FILTER;
-    lsda::LengthThreshold lengthThreshold = lsda::LengthThreshold::CAPPED;
-    double lengthThresholdScale = 1.0;
-    bool keepStrongSegments = true;
-    lsda::GroupingParams grouping;
-    lsda::MergeParams merging;
-
-    int baseDetector = BASE_FAST_LSD;
-    lsda::FldParams fld;
-    lsda::EdParams ed;
+    lsda::Parameters parameters;
     Ptr<lsda::BaseSegmentDetector> baseSegments;  // built on first use after a base parameter changes
     // Buffers of the stages, kept from frame to frame so that a sequence does not allocate. They
     // also hold the last call's stage outputs (getLastStageOutputs): a stage that is off passes
@@ -601,11 +396,14 @@ private:
     struct FrameWorkspace
     {
         std::vector<Vec4f> incoming;  // segments of the current call until its stages run
-        std::vector<Vec4f> base, work, out;
+        std::vector<Vec4f> base, work, out, clipped;
         std::vector<float> baseResponses, mergedResponses;  // stage 1's responses (empty when unused)
         const std::vector<Vec4f>* filtered = nullptr;  // stage 1's output (nullptr before the first call)
         const std::vector<Vec4f>* merged = nullptr;    // stage 3's output
+        const std::vector<Vec4f>* lines = nullptr;     // the returned lines
         bool grouped = false;                          // groups partition stage 2's input
+        std::vector<int> lineOf;                       // the returned line each base segment is part of (-1: none)
+        std::vector<int> keptFrom, into;               // how a stage's segments map to the next's
         lsda::SegmentGroups groups;
         lsda::GroupingWorkspace grouping;
         lsda::MergeWorkspace merging;
@@ -617,13 +415,9 @@ private:
 
 } // namespace
 
-Ptr<LSDAdvance> createLSDAdvance(int lengthFilterMode, double endpointDistance, double mergeThreshold)
+Ptr<LSDAdvance> createLSDAdvance(LSDAdvance::Preset preset)
 {
-    Ptr<LSDAdvance> detector = makePtr<LSDAdvanceImpl>();
-    detector->setLengthFilterMode(lengthFilterMode);
-    detector->setEndpointDistance(endpointDistance);
-    detector->setMergeThreshold(mergeThreshold);
-    return detector;
+    return makePtr<LSDAdvanceImpl>(presetParameters(preset));
 }
 
 }} // namespace cv::ximgproc

@@ -10,6 +10,7 @@
 
 namespace cv {
 namespace ximgproc {
+namespace line_evaluation {
 
 namespace {
 
@@ -253,4 +254,4 @@ EpipolarMatchScore evaluateEpipolarMatches(InputArray segments1In, InputArray se
     return score;
 }
 
-}} // namespace cv::ximgproc
+}}} // namespace cv::ximgproc::line_evaluation

@@ -112,7 +112,7 @@ int angleBin(const Vec4f& s, double binWidth)
     return std::min((int)(angle / binWidth), binCount(binWidth) - 1);
 }
 
-void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
+void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params,
                    SegmentGroups& groups, GroupingWorkspace& ws)
 {
     CV_CheckGT(params.angleBinWidth, 0.0, "angle bins have a width");
@@ -172,7 +172,7 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
                 for (int k = ws.cellStart[cell]; k < ws.cellStart[cell + 1]; k++)
                 {
                     const int other = ws.cellEndpoints[k] >> 1;
-                    if (other <= seg || !binsPair(ws.bin[seg], ws.bin[other], bins, params.neighbourBins))
+                    if (other <= seg || !binsPair(ws.bin[seg], ws.bin[other], bins, params.angleBinning == LSDAdvance::ANGLE_BINS_NEIGHBOURS))
                         continue;
                     const Point2d d = endpoint(ws.cellEndpoints[k]) - p;
                     if (d.dot(d) < maxDistSq)
@@ -206,7 +206,7 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         groups.members[ws.fill[ws.groupOf[i]]++] = i;
 }
 
-void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params, SegmentGroups& groups)
+void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params, SegmentGroups& groups)
 {
     GroupingWorkspace workspace;
     groupSegments(segments, params, groups, workspace);

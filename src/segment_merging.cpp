@@ -5,6 +5,7 @@
 // Stage 3: similarity-ordered merging of each group's segments into its baselines.
 
 #include "precomp.hpp"
+#include "segment_merging.hpp"
 
 namespace cv {
 namespace ximgproc {
@@ -42,7 +43,7 @@ Point2d unitDirection(const Vec4f& s)
 // Whether seg may fuse into base: inside the perpendicular gate, closer than Dth, and scoring
 // at least the threshold (the score is returned). Without the distance condition, direction and
 // length alone (0.6 with the paper's weights) would join collinear pieces any distance apart.
-bool passes(const Vec4f& base, const Vec4f& seg, const MergeParams& params, double& score)
+bool passes(const Vec4f& base, const Vec4f& seg, const LSDAdvance::Params& params, double& score)
 {
     if (perpendicularOffset(base, seg) > params.maxPerpendicularOffset)
         return false;
@@ -61,7 +62,7 @@ double withSlack(double distance)
 
 // Lanes of the sweep: 8 times the perpendicular gate, at least 8 px (narrower lanes cost more
 // look-ups than they save on YorkUrban and on the synthetic sets).
-double laneWidth(const MergeParams& params)
+double laneWidth(const LSDAdvance::Params& params)
 {
     return std::max(8.0 * params.maxPerpendicularOffset, 8.0);
 }
@@ -70,9 +71,12 @@ double laneWidth(const MergeParams& params)
 // long can be and still score at least cutoff. Dmin is at least the gap between the
 // projections, must stay below Dth <= ratio * (baseLength + maxOther) / 2, and bounds Sp;
 // Sd <= 1, and Sl <= min(1, maxOther / baseLength).
+// This bound is derived from similarityTerms() and similarityScore() below: a change of the
+// score's formula must change it (test LSDAdvance_MergingSweep compares the sweep with the
+// all-pairs rule).
 struct Reach
 {
-    Reach(double baseLength, double maxOther, const MergeParams& p)
+    Reach(double baseLength, double maxOther, const LSDAdvance::Params& p)
         : params(p), maxDistance(p.proximityRatio * 0.5 * (baseLength + maxOther)),
           lengthBound(baseLength > 0 ? std::min(1.0, maxOther / baseLength) : 1.0)
     {}
@@ -86,7 +90,7 @@ struct Reach
         return withSlack(reach);
     }
 
-    const MergeParams& params;
+    const LSDAdvance::Params& params;
     double maxDistance, lengthBound;
 };
 
@@ -121,7 +125,7 @@ private:
 // fusion happens; a piece too far from its baseline in one round may join once its neighbour
 // has. Only the segments a grown baseline can reach, and those whose fusion failed, are scored
 // again: the others' best baseline cannot have changed.
-void mergeIntoBaselines(MergeWorkspace& ws, const MergeParams& params)
+void mergeIntoBaselines(MergeWorkspace& ws, const LSDAdvance::Params& params)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -206,6 +210,7 @@ void mergeIntoBaselines(MergeWorkspace& ws, const MergeParams& params)
                 continue;
             geometry[c.baseline] = fuseSegments(geometry[c.baseline], geometry[c.segment]);
             ws.consumed[c.segment] = 1;
+            ws.fusedInto[c.segment] = c.baseline;
             sweep.remove(c.segment);
             if (!ws.isChanged[c.baseline])
             {
@@ -242,7 +247,7 @@ void mergeIntoBaselines(MergeWorkspace& ws, const MergeParams& params)
 // again and again until none passes; equal lengths go by index. Unlike the paper's rule, two
 // long collinear pieces of one edge can join. The shorter segments are visited outwards from
 // the base's projection and the visit stops where no segment can reach the best score so far.
-void mergeLongestFirst(MergeWorkspace& ws, const MergeParams& params)
+void mergeLongestFirst(MergeWorkspace& ws, const LSDAdvance::Params& params)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -309,6 +314,7 @@ void mergeLongestFirst(MergeWorkspace& ws, const MergeParams& params)
                 break;
             geometry[base] = fuseSegments(geometry[base], geometry[best]);
             ws.consumed[best] = 1;
+            ws.fusedInto[best] = base;
             sweep.remove(best);
         }
     }
@@ -328,6 +334,8 @@ double perpendicularOffset(const Vec4f& baseline, const Vec4f& other)
                     pointToLineDistance(endOf(other), baseline));
 }
 
+// Reach (above) relies on these terms' bounds: Sd <= 1, Sp <= 1 - gap / Dth, Sl <= the ratio of
+// the lengths.
 SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& other, double proximityRatio)
 {
     const double lb = segmentLength(baseline), lo = segmentLength(other);
@@ -342,7 +350,8 @@ SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& other, doubl
     return t;
 }
 
-double similarityScore(const SimilarityTerms& t, const MergeParams& p)
+// Reach (above) bounds this score from the gap between two projections: change both together.
+double similarityScore(const SimilarityTerms& t, const LSDAdvance::Params& p)
 {
     return p.directionWeight * t.direction + p.proximityWeight * t.proximity +
            p.lengthWeight * t.length;
@@ -497,39 +506,59 @@ int ProjectionSweep::lastStartingBefore(int lane, double value)
 }
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                 const MergeParams& params, std::vector<Vec4f>& merged, MergeWorkspace& ws)
+                 const LSDAdvance::Params& params, std::vector<Vec4f>& merged, std::vector<int>& mergedInto,
+                 MergeWorkspace& ws)
 {
     merged.clear();
     merged.reserve(segments.size());
+    mergedInto.assign(segments.size(), -1);
     for (int g = 0; g < groups.count(); g++)
     {
         const int begin = groups.offsets[g], end = groups.offsets[g + 1];
-        if (end - begin == 1 || params.strategy == MergeStrategy::NONE)
+        if (end - begin == 1 || params.mergeStrategy == LSDAdvance::MERGE_NONE)
         {
             for (int k = begin; k < end; k++)
+            {
+                mergedInto[groups.members[k]] = (int)merged.size();
                 merged.push_back(segments[groups.members[k]]);
+            }
             continue;
         }
+        const int n = end - begin;
         ws.geometry.clear();
         for (int k = begin; k < end; k++)
             ws.geometry.push_back(segments[groups.members[k]]);
-        ws.consumed.assign(ws.geometry.size(), 0);
-        ws.length.resize(ws.geometry.size());
-        if (params.strategy == MergeStrategy::BASELINES)
+        ws.consumed.assign(n, 0);
+        ws.fusedInto.assign(n, -1);
+        ws.length.resize(n);
+        if (params.mergeStrategy == LSDAdvance::MERGE_BASELINES)
             mergeIntoBaselines(ws, params);
         else
             mergeLongestFirst(ws, params);
-        for (size_t k = 0; k < ws.geometry.size(); k++)
+        ws.outputOf.assign(n, -1);
+        for (int k = 0; k < n; k++)
             if (!ws.consumed[k])
+            {
+                ws.outputOf[k] = (int)merged.size();
                 merged.push_back(ws.geometry[k]);
+            }
+        // A consumed segment is part of what it was fused into, and so on until a survivor.
+        for (int k = 0; k < n; k++)
+        {
+            int owner = k;
+            while (ws.consumed[owner])
+                owner = ws.fusedInto[owner];
+            mergedInto[groups.members[begin + k]] = ws.outputOf[owner];
+        }
     }
 }
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                 const MergeParams& params, std::vector<Vec4f>& merged)
+                 const LSDAdvance::Params& params, std::vector<Vec4f>& merged)
 {
     MergeWorkspace workspace;
-    mergeGroups(segments, groups, params, merged, workspace);
+    std::vector<int> mergedInto;
+    mergeGroups(segments, groups, params, merged, mergedInto, workspace);
 }
 
 }}} // namespace cv::ximgproc::lsda

@@ -8,8 +8,7 @@
 #ifndef OPENCV_LSD_ADVANCE_STAGES_HPP
 #define OPENCV_LSD_ADVANCE_STAGES_HPP
 
-#include "opencv2/core.hpp"
-#include "opencv2/imgproc.hpp"
+#include "opencv2/lsd_advance/lsd_advance.hpp"
 #include <vector>
 
 namespace cv {
@@ -18,57 +17,8 @@ namespace lsda {
 
 //--- stage 0: base detection (base_detector.cpp)
 
-//! Parameters of cv::createLineSegmentDetector, in its argument order. refine and scale
-//! differ from LSD's defaults: chosen by measurement (doc/parameter_sweep.md).
-struct LsdParams
-{
-    int refine = LSD_REFINE_NONE;
-    double scale = 1.0;
-    double sigmaScale = 0.6;
-    double quant = 2.0;
-    double angleTolerance = 22.5;
-    double logEps = 0.0;
-    double densityThreshold = 0.7;
-    int numBins = 1024;
-};
-
 //! Returns the image as CV_8UC1 (a view when it already is); throws on any other input.
 CV_EXPORTS Mat toGray8U(InputArray image);
-
-//! Parameters of cv::ximgproc::createFastLineDetector, in its argument order, with its defaults.
-struct FldParams
-{
-    int lengthThreshold = 10;
-    double distanceThreshold = 1.414213562;
-    double cannyThreshold1 = 50.0;
-    double cannyThreshold2 = 50.0;
-    int cannyApertureSize = 3;
-    bool doMerge = false;
-};
-
-//! The EdgeDrawing::Params that matter for lines, with EdgeDrawing's defaults.
-struct EdParams
-{
-    int gradientOperator = 0;  // EdgeDrawing::PREWITT
-    int gradientThreshold = 20;
-    int anchorThreshold = 0;
-    int scanInterval = 1;
-    int minPathLength = 10;
-    double sigma = 1.0;
-    bool nfaValidation = true;
-    int minLineLength = -1;  // computed from the image size
-    double lineFitErrorThreshold = 1.0;
-    double maxDistanceBetweenTwoLines = 6.0;
-    double maxErrorThreshold = 1.3;
-};
-
-enum class BaseKind
-{
-    LSD,
-    FLD,
-    EDLINES,
-    FAST_LSD
-};
 
 //! Stage 0 behind one interface: OpenCV's detectors, constructed once and reused frame to frame.
 class CV_EXPORTS BaseSegmentDetector
@@ -79,8 +29,10 @@ public:
     virtual void detect(const Mat& gray, std::vector<Vec4f>& segments) = 0;
 };
 
-CV_EXPORTS Ptr<BaseSegmentDetector> createBaseDetector(BaseKind kind, const LsdParams& lsd,
-                                                       const FldParams& fld, const EdParams& ed);
+//! The detector of kind (LSDAdvance::BaseDetector) with its parameters (those of the other kinds
+//! are not used).
+CV_EXPORTS Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
+                                                       const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines);
 
 //! Turns round each segment on whose right the image is brighter than on its left (sum of 5
 //! samples 2 px either side, nearest pixel, samples outside the image skipped).
@@ -110,28 +62,25 @@ CV_EXPORTS double countTrackingAlpha(int provisional, int keptPrevious, int kept
 //! Number of segments at least minLength long.
 CV_EXPORTS int countAtLeast(const std::vector<Vec4f>& segments, double minLength);
 
-enum class LengthThreshold
-{
-    PAPER,   //!< (1 - |mean - std| / mean) * mean * alpha, clamped at 0
-    CAPPED   //!< min(mean, std) * alpha: the paper's value while std <= mean, then mean
-};
-
-//! Length threshold of the segments' lengths (mean, population std); 0 for no segments.
+//! Length threshold (LSDAdvance::LengthThresholdRule rule) of the segments' lengths (mean,
+//! population std), times alpha; 0 for no segments.
 CV_EXPORTS double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha,
-                                    LengthThreshold rule = LengthThreshold::PAPER);
+                                    int rule = LSDAdvance::LENGTH_THRESHOLD_PAPER);
 
 //! The same rule on responses (lineResponses): the threshold of stage 1's strong segments.
-CV_EXPORTS double adaptiveMinResponse(const std::vector<float>& responses, double alpha,
-                                      LengthThreshold rule);
+CV_EXPORTS double adaptiveMinResponse(const std::vector<float>& responses, double alpha, int rule);
 
-//! Copies the segments not shorter than minLength, in their order.
+//! Copies the segments not shorter than minLength, in their order; keptFrom, when given, gets the
+//! index in segments of each kept one.
 CV_EXPORTS void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
-                                  std::vector<Vec4f>& kept);
+                                  std::vector<Vec4f>& kept, std::vector<int>* keptFrom = nullptr);
 
 //! Copies, in their order, the segments at least minLength long or, when responses (one per
-//! segment) are given, with a response of at least minResponse: long or strong.
+//! segment) are given, with a response of at least minResponse: long or strong. keptFrom as for
+//! dropShortSegments.
 CV_EXPORTS void keepLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
-                                 double minLength, double minResponse, std::vector<Vec4f>& kept);
+                                 double minLength, double minResponse, std::vector<Vec4f>& kept,
+                                 std::vector<int>* keptFrom = nullptr);
 
 //! Number of segments keepLongOrStrong keeps.
 CV_EXPORTS int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
@@ -150,13 +99,6 @@ CV_EXPORTS void lineResponses(const Mat& gray, const std::vector<Vec4f>& segment
                               std::vector<float>& responses);
 
 //--- stage 2: angle + endpoint grouping (segment_grouping.cpp)
-
-struct GroupingParams
-{
-    double angleBinWidth = 10.0;      //!< degrees
-    bool neighbourBins = true;        //!< pair bins k-1, k, k+1 (cyclic)
-    double endpointDistance = 10.0;   //!< pixels
-};
 
 //! Merge groups in compressed form: the members of group g are
 //! members[offsets[g]] .. members[offsets[g+1] - 1], in increasing index order; groups are
@@ -186,33 +128,15 @@ struct GroupingWorkspace
 };
 
 //! Groups in O(n) expected time (a hashed grid of endpoints, union-find).
-CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
+//! Uses params.angleBinWidth, angleBinning and endpointDistance.
+CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params,
                               SegmentGroups& groups, GroupingWorkspace& workspace);
 
 //! The same with a temporary workspace.
-CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
+CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params,
                               SegmentGroups& groups);
 
 //--- stage 3: similarity-ordered merging (segment_merging.cpp)
-
-enum class MergeStrategy
-{
-    NONE,           //!< no fusion
-    BASELINES,      //!< the paper: only segments shorter than baselineRatio x the longest fuse, into the longer ones
-    LONGEST_FIRST   //!< every segment, longest first, absorbs the shorter ones that pass
-};
-
-struct MergeParams
-{
-    MergeStrategy strategy = MergeStrategy::LONGEST_FIRST;
-    double baselineRatio = 0.8;
-    double directionWeight = 0.4;
-    double proximityWeight = 0.35;
-    double lengthWeight = 0.2;
-    double proximityRatio = 1.0;
-    double mergeThreshold = 0.6;
-    double maxPerpendicularOffset = 1.5;  //!< pixels
-};
 
 struct SimilarityTerms
 {
@@ -227,98 +151,43 @@ CV_EXPORTS double segmentDistance(const Vec4f& a, const Vec4f& b);
 //! Largest distance of the other segment's endpoints to the baseline's supporting line.
 CV_EXPORTS double perpendicularOffset(const Vec4f& baseline, const Vec4f& other);
 
+//! Sd, Sp and Sl of other against baseline (Sp reaches 0 at proximityRatio times their mean length).
 CV_EXPORTS SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& other,
                                            double proximityRatio);
 
-CV_EXPORTS double similarityScore(const SimilarityTerms& terms, const MergeParams& params);
+//! S = directionWeight Sd + proximityWeight Sp + lengthWeight Sl. The merging sweep's pruning
+//! bound (Reach in segment_merging.cpp) is derived from this formula and from
+//! similarityTerms(): a change of either must change the bound.
+CV_EXPORTS double similarityScore(const SimilarityTerms& terms, const LSDAdvance::Params& params);
 
 //! Fuses other into baseline; the result keeps the baseline's orientation.
 CV_EXPORTS Vec4f fuseSegments(const Vec4f& baseline, const Vec4f& other);
 
-//! The segments of one group that may still fuse, filed by the start of their projection on a
-//! fixed direction, in lanes across it (by the position of their midpoint along the normal),
-//! with removal. Two segments are at least as far apart as their projections, and a segment
-//! within a perpendicular distance of a base's line has its midpoint in the few lanes that line
-//! crosses: merging looks at the segments of those lanes whose projections come near the base's,
-//! never at the whole group. This keeps a group of thousands of collinear pieces, or of
-//! hundreds of parallel ones (a textured facade), near-linear.
-class CV_EXPORTS ProjectionSweep
-{
-public:
-    //! Files the segments geometry[ids[k]], projected on the unit vector direction, in lanes at
-    //! least laneWidth px wide (wider when the group would need more lanes than segments).
-    void build(const std::vector<Vec4f>& geometry, const std::vector<int>& ids, const Point2d& direction,
-               double laneWidth);
-    //! Interval [min, max] of the projection of a segment's endpoints on the direction.
-    Vec2d project(const Vec4f& segment) const;
-    //! Lanes [first, last] holding every segment whose midpoint projects into [low, high] and
-    //! lies within maxOffset px of the line through base (all lanes for a point or a base
-    //! steeper than 45 degrees to the direction).
-    void lanesNear(const Vec4f& base, double low, double high, double maxOffset, int& first, int& last) const;
-    //! Removes segment id (an index into geometry); it is no longer visited.
-    void remove(int id);
-    int lanes() const { return (int)laneStart.size() - 1; }
-    //! Positions of lane l are laneBegin(l) .. laneEnd(l) - 1.
-    int laneBegin(int lane) const { return laneStart[lane]; }
-    int laneEnd(int lane) const { return laneStart[lane + 1]; }
-    //! First filed position of the lane whose projection starts at or after value; at least
-    //! laneEnd(lane) when none.
-    int firstStartingFrom(int lane, double value);
-    //! Last filed position of the lane whose projection starts before value; below
-    //! laneBegin(lane) when none.
-    int lastStartingBefore(int lane, double value);
-    int next(int position) { return findNext(position + 1); }
-    int previous(int position) { return findPrevious(position - 1); }
-    int id(int position) const { return ids[position]; }
-    double start(int position) const { return starts[position]; }
-    double end(int position) const { return ends[position]; }
+//! Buffers of stage 3, reused from group to group and call to call (segment_merging.hpp).
+struct MergeWorkspace;
 
-private:
-    int findNext(int position);
-    int findPrevious(int position);
-
-    Point2d direction, normal;
-    double laneOrigin = 0, laneSize = 1;
-    std::vector<double> starts, ends;
-    std::vector<int> ids;
-    std::vector<int> laneStart;     //!< compressed rows: the positions of each lane
-    std::vector<int> positionOf;    //!< position of each geometry index (-1: not filed)
-    std::vector<int> nextFiled;     //!< union-find links to the next filed position (size() is a sentinel)
-    std::vector<int> previousFiled; //!< the same backwards, shifted by one (0 is a sentinel)
-    std::vector<std::pair<std::pair<int, double>, int> > sortBuffer;
-    std::vector<double> across;
-};
-
-struct MergeCandidate
-{
-    double score;
-    int segment;   //!< index into the group's members
-    int baseline;  //!< index into the group's members; -1 for none
-};
-
-//! Buffers of stage 3, reused from group to group and call to call.
-struct MergeWorkspace
-{
-    std::vector<Vec4f> geometry;  //!< the current group's segments, fused in place
-    std::vector<char> consumed;
-    std::vector<double> length;
-    std::vector<int> order, rank, ids;
-    std::vector<int> baselines, pending, changed;
-    std::vector<char> dirty, isChanged;
-    std::vector<MergeCandidate> candidates, bestOf;
-    std::vector<std::pair<double, int> > baselineStarts;
-    ProjectionSweep sweep;
-};
-
-//! Merges each group; output keeps group order, and member order inside a group. The result
-//! is that of scoring every pair of the group, computed with the sweep.
+//! Merges each group with params.mergeStrategy (MERGE_NONE passes the segments on) and the score's parameters;
+//! output keeps group order, and member order inside a group; mergedInto gets, for each segment,
+//! the index of the merged segment it is part of. The result is that of scoring every pair of
+//! the group, computed with the sweep.
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                            const MergeParams& params, std::vector<Vec4f>& merged,
-                            MergeWorkspace& workspace);
+                            const LSDAdvance::Params& params, std::vector<Vec4f>& merged,
+                            std::vector<int>& mergedInto, MergeWorkspace& workspace);
 
-//! The same with a temporary workspace.
+//! The same with a temporary workspace, without mergedInto.
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                            const MergeParams& params, std::vector<Vec4f>& merged);
+                            const LSDAdvance::Params& params, std::vector<Vec4f>& merged);
+
+//--- after the stages: clipping to the image (image_clipping.cpp)
+
+//! The part of segment inside the image domain [-0.5, W-0.5] x [-0.5, H-0.5], along its line and
+//! in its direction: segment itself when it lies inside; false when nothing of positive length
+//! is left (a point is dropped even inside).
+CV_EXPORTS bool clipToDomain(const Vec4f& segment, const Size& imageSize, Vec4f& clipped);
+
+//! clipToDomain() on each segment; keptFrom gets the index in segments of each one kept.
+CV_EXPORTS void clipToImage(const std::vector<Vec4f>& segments, const Size& imageSize,
+                            std::vector<Vec4f>& clipped, std::vector<int>& keptFrom);
 
 }}} // namespace cv::ximgproc::lsda
 

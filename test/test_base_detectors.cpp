@@ -6,6 +6,7 @@
 // base parameter is used, and every base returns segments brighter side on the left.
 
 #include "test_precomp.hpp"
+#include "parameter_access.hpp"
 #include "opencv2/ximgproc.hpp"
 
 namespace opencv_test { namespace {
@@ -74,7 +75,7 @@ std::vector<Vec4f> piecesAlong(const std::vector<Vec4f>& lines, const Vec4f& sid
 
 Ptr<LSDAdvance> onBase(int base, bool stages)
 {
-    Ptr<LSDAdvance> detector = createLSDAdvance(stages ? LSDAdvance::LENGTH_FILTER_ADAPTIVE : LSDAdvance::LENGTH_FILTER_NONE);
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(stages ? LSDAdvance::LENGTH_FILTER_ADAPTIVE : LSDAdvance::LENGTH_FILTER_NONE);
     detector->setBaseDetector(base);
     if (!stages)
         detector->setMergeStrategy(LSDAdvance::MERGE_NONE);
@@ -186,40 +187,46 @@ TEST(LSDAdvance_BaseDetectors, fld_and_edlines_bases_return_what_opencv_returns)
     EXPECT_EQ(expected.size(), lines.size());
 }
 
-TEST(LSDAdvance_BaseDetectors, every_fld_and_edlines_parameter_changes_the_base_segments)
+// Each parameter of each base changes the base segments of building.jpg: a value to set, and
+// what to set before on both detectors for the parameter to act.
+TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
 {
     const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
     ASSERT_FALSE(img.empty());
-    struct Change { const char* name; int base; std::function<void(LSDAdvance&)> apply; };
-    const std::vector<Change> changes = {
-        { "fldLengthThreshold", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldLengthThreshold(30); } },
-        { "fldDistanceThreshold", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldDistanceThreshold(3.0); } },
-        { "fldCannyThreshold1", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldCannyThreshold1(150); } },
-        { "fldCannyThreshold2", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldCannyThreshold2(150); } },
-        { "fldCannyApertureSize", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldCannyApertureSize(5); } },
-        { "fldDoMerge", LSDAdvance::BASE_FLD, [](LSDAdvance& d) { d.setFldDoMerge(true); } },
-        { "edGradientOperator", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdGradientOperator(EdgeDrawing::SOBEL); } },
-        { "edGradientThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdGradientThreshold(60); } },
-        { "edAnchorThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdAnchorThreshold(8); } },
-        { "edScanInterval", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdScanInterval(4); } },
-        { "edMinPathLength", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMinPathLength(60); } },
-        { "edSigma", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdSigma(2.5); } },
-        { "edNfaValidation", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdNfaValidation(false); } },
-        { "edMinLineLength", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMinLineLength(40); } },
-        { "edLineFitErrorThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdLineFitErrorThreshold(2.5); } },
-        { "edMaxDistanceBetweenTwoLines", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMaxDistanceBetweenTwoLines(30); } },
-        { "edMaxErrorThreshold", LSDAdvance::BASE_EDLINES, [](LSDAdvance& d) { d.setEdMaxErrorThreshold(4.0); } },
+    const std::vector<EffectOf> effects = {
+        { "LSDParams::refine", LSD_REFINE_STD, nullptr, 0 },
+        { "LSDParams::scale", 0.5, nullptr, 0 },
+        { "LSDParams::sigmaScale", 1.2, "LSDParams::scale", 0.8 },  // smoothing only below scale 1
+        { "LSDParams::quant", 8.0, nullptr, 0 },
+        { "LSDParams::angleTolerance", 12.0, nullptr, 0 },
+        { "LSDParams::logEps", 3.0, "LSDParams::refine", LSD_REFINE_ADV },
+        { "LSDParams::densityThreshold", 0.95, "LSDParams::refine", LSD_REFINE_STD },
+        { "LSDParams::numBins", 4, nullptr, 0 },
+        { "FLDParams::lengthThreshold", 30, nullptr, 0 },
+        { "FLDParams::distanceThreshold", 3.0, nullptr, 0 },
+        { "FLDParams::cannyThreshold1", 150, nullptr, 0 },
+        { "FLDParams::cannyThreshold2", 150, nullptr, 0 },
+        { "FLDParams::cannyApertureSize", 5, nullptr, 0 },
+        { "FLDParams::doMerge", 1, nullptr, 0 },
+        { "EdgeDrawing::Params::PFmode", 1, nullptr, 0 },
+        { "EdgeDrawing::Params::EdgeDetectionOperator", EdgeDrawing::SOBEL, nullptr, 0 },
+        { "EdgeDrawing::Params::GradientThresholdValue", 60, nullptr, 0 },
+        { "EdgeDrawing::Params::AnchorThresholdValue", 8, nullptr, 0 },
+        { "EdgeDrawing::Params::ScanInterval", 4, nullptr, 0 },
+        { "EdgeDrawing::Params::MinPathLength", 60, nullptr, 0 },
+        { "EdgeDrawing::Params::Sigma", 2.5, nullptr, 0 },
+        { "EdgeDrawing::Params::SumFlag", 0, nullptr, 0 },
+        { "EdgeDrawing::Params::NFAValidation", 0, nullptr, 0 },
+        { "EdgeDrawing::Params::MinLineLength", 40, nullptr, 0 },
+        { "EdgeDrawing::Params::MaxDistanceBetweenTwoLines", 30, nullptr, 0 },
+        { "EdgeDrawing::Params::LineFitErrorThreshold", 2.5, nullptr, 0 },
+        { "EdgeDrawing::Params::MaxErrorThreshold", 4.0, nullptr, 0 },
     };
-    for (const Change& c : changes)
-    {
-        SCOPED_TRACE(c.name);
-        std::vector<Vec4f> expected, lines;
-        onBase(c.base, false)->detect(img, expected);
-        Ptr<LSDAdvance> changed = onBase(c.base, false);
-        c.apply(*changed);
-        changed->detect(img, lines);
-        EXPECT_NE(expected, lines);
-    }
+    expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base >= 0; },
+                                        [](const ParameterAccess& p) { return onBase(p.base, false); });
+    // LSDParams serve both LSD bases.
+    expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base == LSDAdvance::BASE_LSD; },
+                                        [](const ParameterAccess&) { return onBase(LSDAdvance::BASE_FAST_LSD, false); });
 }
 
 TEST(LSDAdvance_BaseDetectors, base_parameters_of_another_base_are_unused)
@@ -229,8 +236,12 @@ TEST(LSDAdvance_BaseDetectors, base_parameters_of_another_base_are_unused)
     std::vector<Vec4f> expected, lines;
     onBase(LSDAdvance::BASE_LSD, true)->detect(img, expected);
     Ptr<LSDAdvance> detector = onBase(LSDAdvance::BASE_LSD, true);
-    detector->setFldLengthThreshold(40);
-    detector->setEdGradientThreshold(80);
+    LSDAdvance::FLDParams fld = detector->getFLDParams();
+    fld.lengthThreshold = 40;
+    detector->setFLDParams(fld);
+    EdgeDrawing::Params ed = detector->getEDLinesParams();
+    ed.GradientThresholdValue = 80;
+    detector->setEDLinesParams(ed);
     detector->detect(img, lines);
     EXPECT_EQ(expected, lines);
 }

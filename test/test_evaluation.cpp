@@ -467,15 +467,15 @@ TEST(LSDAdvance_Evaluation, long_segment_share_counts_segments_at_least_min_leng
     const std::vector<Vec4f> lines = { Vec4f(0, 0, 100, 0), Vec4f(0, 0, 36, 48), Vec4f(0, 0, 0, 59.9f),
                                        Vec4f(5, 5, 15, 5) };
     // The test_precomp helper shares the name: call the module's function explicitly.
-    EXPECT_NEAR(2.0 / 4.0, cv::ximgproc::longSegmentShare(lines), 1e-12);
-    EXPECT_NEAR(2.0 / 4.0, cv::ximgproc::longSegmentShare(lines, 60.0), 1e-12);
-    EXPECT_NEAR(3.0 / 4.0, cv::ximgproc::longSegmentShare(lines, 50.0), 1e-12);
-    EXPECT_NEAR(1.0, cv::ximgproc::longSegmentShare(lines, 0.0), 1e-12);
-    EXPECT_NEAR(0.0, cv::ximgproc::longSegmentShare(lines, 200.0), 1e-12);
-    EXPECT_NEAR(1.0 / 4.0, cv::ximgproc::longSegmentShare(Mat(lines, true), 61.0), 1e-12);
-    EXPECT_EQ(0.0, cv::ximgproc::longSegmentShare(std::vector<Vec4f>()));
-    EXPECT_EQ(0.0, cv::ximgproc::longSegmentShare(Mat()));
-    EXPECT_THROW(cv::ximgproc::longSegmentShare(Mat(1, 4, CV_32FC1, Scalar(1))), cv::Exception);
+    EXPECT_NEAR(2.0 / 4.0, line_evaluation::longSegmentShare(lines), 1e-12);
+    EXPECT_NEAR(2.0 / 4.0, line_evaluation::longSegmentShare(lines, 60.0), 1e-12);
+    EXPECT_NEAR(3.0 / 4.0, line_evaluation::longSegmentShare(lines, 50.0), 1e-12);
+    EXPECT_NEAR(1.0, line_evaluation::longSegmentShare(lines, 0.0), 1e-12);
+    EXPECT_NEAR(0.0, line_evaluation::longSegmentShare(lines, 200.0), 1e-12);
+    EXPECT_NEAR(1.0 / 4.0, line_evaluation::longSegmentShare(Mat(lines, true), 61.0), 1e-12);
+    EXPECT_EQ(0.0, line_evaluation::longSegmentShare(std::vector<Vec4f>()));
+    EXPECT_EQ(0.0, line_evaluation::longSegmentShare(Mat()));
+    EXPECT_THROW(line_evaluation::longSegmentShare(Mat(1, 4, CV_32FC1, Scalar(1))), cv::Exception);
 }
 
 // ---------------------------------------------------------------- segment files

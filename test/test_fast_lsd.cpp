@@ -107,16 +107,16 @@ struct Agreement
     double ourShare() const { return ours ? (double)oursByOpencv / ours : 1.0; }
 };
 
-lsda::LsdParams lsdParams(int refine, double scale)
+LSDAdvance::LSDParams lsdParams(int refine, double scale)
 {
-    lsda::LsdParams p;
+    LSDAdvance::LSDParams p;
     p.refine = refine;
     p.scale = scale;
     return p;
 }
 
 // Both detectors with the same parameters on every image, pooled.
-Agreement compareWithOpenCV(const std::vector<std::string>& paths, const lsda::LsdParams& p)
+Agreement compareWithOpenCV(const std::vector<std::string>& paths, const LSDAdvance::LSDParams& p)
 {
     Ptr<LineSegmentDetector> opencv = createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant,
                                                                 p.angleTolerance, p.logEps, p.densityThreshold,
@@ -176,7 +176,7 @@ void expectAgreement(const char* set, const Agreement& a, double atLeast)
 // The default set-up of LSDAdvance's base: full resolution, no refinement.
 TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_without_refinement_both_ways)
 {
-    const lsda::LsdParams p = lsdParams(LSD_REFINE_NONE, 1.0);
+    const LSDAdvance::LSDParams p = lsdParams(LSD_REFINE_NONE, 1.0);
     expectAgreement("yorkurban (51)", compareWithOpenCV(yorkUrbanImages(1), p), 0.98);
     expectAgreement("kitti_seq1 (every 5th frame)", compareWithOpenCV(kittiFrames(5), p), 0.98);
     expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.98);
@@ -185,7 +185,7 @@ TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_without_refinement_both_ways)
 // OpenCV's default set-up: Gaussian sub-sampling to 0.8 and the refinement of sparse regions.
 TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_with_standard_refinement_at_scale_0_8_both_ways)
 {
-    const lsda::LsdParams p = lsdParams(LSD_REFINE_STD, 0.8);
+    const LSDAdvance::LSDParams p = lsdParams(LSD_REFINE_STD, 0.8);
     expectAgreement("yorkurban (every 3rd)", compareWithOpenCV(yorkUrbanImages(3), p), 0.95);
     expectAgreement("kitti_seq1 (every 10th frame)", compareWithOpenCV(kittiFrames(10), p), 0.95);
     expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.95);
@@ -259,7 +259,9 @@ TEST(LSDAdvance_FastLsd, output_does_not_depend_on_the_number_of_threads)
         {
             Ptr<LSDAdvance> detector = createLSDAdvance();
             detector->setBaseDetector(LSDAdvance::BASE_FAST_LSD);
-            detector->setLsdRefine(refine);
+            LSDAdvance::LSDParams lsd = detector->getLSDParams();
+            lsd.refine = refine;
+            detector->setLSDParams(lsd);
             std::vector<Vec4f> lines;
             detector->detect(img, lines);
             if (n == 1 && refine == LSD_REFINE_NONE)

@@ -7,7 +7,7 @@
 namespace opencv_test { namespace {
 
 // Group index of every segment.
-std::vector<int> groupIds(const std::vector<Vec4f>& segments, const lsda::GroupingParams& params)
+std::vector<int> groupIds(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params)
 {
     lsda::SegmentGroups groups;
     lsda::groupSegments(segments, params, groups);
@@ -18,10 +18,10 @@ std::vector<int> groupIds(const std::vector<Vec4f>& segments, const lsda::Groupi
     return id;
 }
 
-lsda::GroupingParams groupingParams(bool neighbourBins, double endpointDistance = 10.0)
+LSDAdvance::Params groupingParams(bool neighbourBins, double endpointDistance = 10.0)
 {
-    lsda::GroupingParams p;
-    p.neighbourBins = neighbourBins;
+    LSDAdvance::Params p;
+    p.angleBinning = neighbourBins ? LSDAdvance::ANGLE_BINS_NEIGHBOURS : LSDAdvance::ANGLE_BINS_STRICT;
     p.endpointDistance = endpointDistance;
     return p;
 }
@@ -108,7 +108,7 @@ TEST(LSDAdvance_Grouping, matches_an_all_pairs_reference_on_random_segments)
         for (int i = 0; i < 300; i++)
             segments.push_back(segmentAt(rng.uniform(0., 300.), rng.uniform(0., 300.),
                                          rng.uniform(0., 360.), rng.uniform(0., 40.)));
-        lsda::GroupingParams params = groupingParams(trial % 2 == 0, rng.uniform(2., 20.));
+        LSDAdvance::Params params = groupingParams(trial % 2 == 0, rng.uniform(2., 20.));
         params.angleBinWidth = rng.uniform(5., 30.);
 
         // Reference: all pairs, connected components by repeated relabelling.
@@ -126,7 +126,7 @@ TEST(LSDAdvance_Grouping, matches_an_all_pairs_reference_on_random_segments)
                     const int bi = lsda::angleBin(segments[i], params.angleBinWidth);
                     const int bj = lsda::angleBin(segments[j], params.angleBinWidth);
                     const int d = std::abs(bi - bj);
-                    if (i == j || !(d == 0 || (params.neighbourBins && (d == 1 || d == bins - 1))))
+                    if (i == j || !(d == 0 || (params.angleBinning == LSDAdvance::ANGLE_BINS_NEIGHBOURS && (d == 1 || d == bins - 1))))
                         continue;
                     double best = DBL_MAX;
                     for (int ei = 0; ei < 2; ei++)

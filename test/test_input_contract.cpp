@@ -8,6 +8,7 @@
 // gives the lines and alpha of an object that never saw the bad call.
 
 #include "test_precomp.hpp"
+#include "parameter_access.hpp"
 
 namespace opencv_test { namespace {
 
@@ -44,7 +45,7 @@ struct FrameResult
 const FrameResult& referenceThirdFrame()
 {
     static const FrameResult result = [] {
-        Ptr<LSDAdvance> reference = createLSDAdvance();
+        Ptr<LSDAdvance> reference = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME);
         FrameResult r;
         for (const Mat& frame : sequenceFrames())
             reference->detect(frame, r.lines);
@@ -61,7 +62,7 @@ void expectRejectedAndStillCorrect(const std::function<void(LSDAdvance&)>& badCa
 {
     const FrameResult& expected = referenceThirdFrame();
     ASSERT_NE(1.0, expected.alpha) << "the frames must exercise the sequence state";
-    Ptr<LSDAdvance> detector = createLSDAdvance();
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME);
     std::vector<Vec4f> lines;
     detector->detect(sequenceFrames()[0], lines);
     detector->detect(sequenceFrames()[1], lines);
@@ -86,22 +87,22 @@ void detectInto(LSDAdvance& d, const Mat& image)
     d.detect(image, lines);
 }
 
-// Coordinates are finite and within the image extended by `margin` pixels on each side.
-void expectInsideImage(const std::vector<Vec4f>& lines, const Size& size, float margin)
+// Coordinates are finite and inside the image domain [-0.5, W-0.5] x [-0.5, H-0.5] ("Output." in
+// the class description: what reaches past it is clipped), and every segment has a length.
+void expectInsideImage(const std::vector<Vec4f>& lines, const Size& size)
 {
     for (const Vec4f& l : lines)
+    {
         for (int i = 0; i < 4; i++)
         {
             ASSERT_TRUE(std::isfinite(l[i])) << l;
-            const float extent = (float)(i % 2 == 0 ? size.width : size.height) - 1.0f;
-            EXPECT_GE(l[i], -margin) << l;
-            EXPECT_LE(l[i], extent + margin) << l;
+            const float extent = (float)(i % 2 == 0 ? size.width : size.height) - 0.5f;
+            EXPECT_GE(l[i], -0.5f) << l;
+            EXPECT_LE(l[i], extent) << l;
         }
+        EXPECT_GT(lsda::segmentLength(l), 0.0) << l;
+    }
 }
-
-// Like LSD's, endpoints may lie a few pixels outside the image ("Output." in the class
-// description; measured up to 8.5 px on the 203 frames of the test data).
-const float kOutputMargin = 10.0f;
 
 std::vector<Vec4f> detectFresh(InputArray image)
 {
@@ -202,7 +203,7 @@ TEST(LSDAdvance_InputContract, non_continuous_gray_view_gives_the_lines_of_its_c
     const std::vector<Vec4f> lines = detectFresh(view);
     ASSERT_FALSE(lines.empty());
     EXPECT_EQ(detectFresh(view.clone()), lines);
-    expectInsideImage(lines, view.size(), kOutputMargin);
+    expectInsideImage(lines, view.size());
 }
 
 TEST(LSDAdvance_InputContract, non_continuous_colour_view_gives_the_lines_of_its_copy)
@@ -221,7 +222,7 @@ TEST(LSDAdvance_InputContract, one_column_wide_view_of_a_larger_image)
     ASSERT_FALSE(column.isContinuous());
     std::vector<Vec4f> lines;
     ASSERT_NO_THROW(createLSDAdvance()->detect(column, lines));
-    expectInsideImage(lines, column.size(), kOutputMargin);
+    expectInsideImage(lines, column.size());
 }
 
 TEST(LSDAdvance_InputContract, umat_input_gives_the_lines_of_the_mat)
@@ -239,7 +240,7 @@ void expectTinyImageHandled(const Size& size)
     Ptr<LSDAdvance> detector = createLSDAdvance();
     std::vector<Vec4f> lines;
     ASSERT_NO_THROW(detector->detect(img, lines));
-    expectInsideImage(lines, size, kOutputMargin);
+    expectInsideImage(lines, size);
     EXPECT_EQ((int)lines.size(), detector->getLastStats().outputSegments);
 }
 
@@ -276,10 +277,12 @@ TEST(LSDAdvance_InputContract, images_smaller_than_the_base_detector_support)
             for (int scaled = 0; scaled < 2; scaled++)
             {
                 Ptr<LSDAdvance> detector = createLSDAdvance();
-                detector->setLsdScale(scaled ? 0.5 : 1.0);
+                LSDAdvance::LSDParams lsd = detector->getLSDParams();
+                lsd.scale = scaled ? 0.5 : 1.0;
+                detector->setLSDParams(lsd);
                 std::vector<Vec4f> lines;
                 ASSERT_NO_THROW(detector->detect(img, lines));
-                expectInsideImage(lines, img.size(), kOutputMargin);
+                expectInsideImage(lines, img.size());
             }
         }
 }
@@ -295,7 +298,7 @@ TEST(LSDAdvance_InputContract, image_10000x10000_has_no_overflow)
     std::vector<Vec4f> lines;
     Ptr<LSDAdvance> detector = createLSDAdvance();
     ASSERT_NO_THROW(detector->detect(img, lines));
-    expectInsideImage(lines, img.size(), kOutputMargin);
+    expectInsideImage(lines, img.size());
     // The four sides of the rectangle, each 6000 or 8000 px long, are found as long segments.
     int longSides = 0;
     for (const Vec4f& l : lines)
@@ -340,7 +343,7 @@ TEST(LSDAdvance_InputContract, saturated_image_gives_its_edge)
     EXPECT_NEAR(99.5, lines[0][1], 1.0);
     EXPECT_NEAR(99.5, lines[0][3], 1.0);
     EXPECT_GT(lsda::segmentLength(lines[0]), 300);
-    expectInsideImage(lines, img.size(), kOutputMargin);
+    expectInsideImage(lines, img.size());
 }
 
 TEST(LSDAdvance_InputContract, checkerboard_gives_lines_on_the_square_edges)
@@ -352,7 +355,7 @@ TEST(LSDAdvance_InputContract, checkerboard_gives_lines_on_the_square_edges)
             img.at<uchar>(y, x) = ((x / square + y / square) % 2) ? 255 : 0;
     const std::vector<Vec4f> lines = detectFresh(img);
     ASSERT_FALSE(lines.empty());
-    expectInsideImage(lines, img.size(), kOutputMargin);
+    expectInsideImage(lines, img.size());
     for (const Vec4f& l : lines)
     {
         // Axis-parallel, on a square boundary (pixel-centre coordinates: k * 20 - 0.5).
@@ -373,7 +376,7 @@ TEST(LSDAdvance_InputContract, pure_noise_gives_finite_lines_inside_the_image)
     Ptr<LSDAdvance> detector = createLSDAdvance();
     std::vector<Vec4f> lines;
     detector->detect(img, lines);
-    expectInsideImage(lines, img.size(), kOutputMargin);
+    expectInsideImage(lines, img.size());
     const LSDAdvanceStats stats = detector->getLastStats();
     EXPECT_LE(stats.outputSegments, stats.baseSegments);
     EXPECT_TRUE(std::isfinite(stats.minLength));
@@ -381,134 +384,90 @@ TEST(LSDAdvance_InputContract, pure_noise_gives_finite_lines_inside_the_image)
 
 //--- parameters through the setters
 
-// Every real parameter with its documented range (the header's @brief of each setter).
-struct RealSetter
+// Every parameter stored as a double: NaN, infinities and huge values must all be rejected.
+void expectRealValueRejectedByEverySetter(double value)
 {
-    const char* name;
-    void (LSDAdvance::*set)(double);
-    double lo, hi;
-    bool loIncluded;
-};
-
-std::vector<RealSetter> realSetters()
-{
-    return {
-        { "lsdScale", &LSDAdvance::setLsdScale, 0, 1, false },
-        { "lsdSigmaScale", &LSDAdvance::setLsdSigmaScale, 0, 100, false },
-        { "lsdQuant", &LSDAdvance::setLsdQuant, 0, 255, true },
-        { "lsdAngleTolerance", &LSDAdvance::setLsdAngleTolerance, 0, 180, false },
-        { "lsdLogEps", &LSDAdvance::setLsdLogEps, -1000, 1000, true },
-        { "lsdDensityThreshold", &LSDAdvance::setLsdDensityThreshold, 0, 1, true },
-        { "angleBinWidth", &LSDAdvance::setAngleBinWidth, 1, 90, true },
-        { "endpointDistance", &LSDAdvance::setEndpointDistance, 0.1, 200, true },
-        { "baselineRatio", &LSDAdvance::setBaselineRatio, 0, 1, false },
-        { "directionWeight", &LSDAdvance::setDirectionWeight, 0, 1, true },
-        { "proximityWeight", &LSDAdvance::setProximityWeight, 0, 1, true },
-        { "lengthWeight", &LSDAdvance::setLengthWeight, 0, 1, true },
-        { "proximityRatio", &LSDAdvance::setProximityRatio, 0, 10, false },
-        { "mergeThreshold", &LSDAdvance::setMergeThreshold, 0, 1, true },
-        { "maxPerpendicularOffset", &LSDAdvance::setMaxPerpendicularOffset, 0, 100, true },
-        { "lengthThresholdScale", &LSDAdvance::setLengthThresholdScale, 0, 10, false },
-    };
-}
-
-struct IntSetter
-{
-    const char* name;
-    void (LSDAdvance::*set)(int);
-    int lo, hi;
-};
-
-std::vector<IntSetter> intSetters()
-{
-    return {
-        { "lsdRefine", &LSDAdvance::setLsdRefine, LSD_REFINE_NONE, LSD_REFINE_ADV },
-        { "lsdNumBins", &LSDAdvance::setLsdNumBins, 1, 65536 },
-        { "lengthFilterMode", &LSDAdvance::setLengthFilterMode, LSDAdvance::LENGTH_FILTER_NONE,
-          LSDAdvance::LENGTH_FILTER_COUNT_TRACKING },
-        { "lengthThreshold", &LSDAdvance::setLengthThreshold, LSDAdvance::LENGTH_THRESHOLD_PAPER,
-          LSDAdvance::LENGTH_THRESHOLD_CAPPED },
-        { "mergeStrategy", &LSDAdvance::setMergeStrategy, LSDAdvance::MERGE_NONE, LSDAdvance::MERGE_LONGEST_FIRST },
-        { "stageOrder", &LSDAdvance::setStageOrder, LSDAdvance::FILTER_THEN_MERGE, LSDAdvance::MERGE_THEN_FILTER },
-        { "angleBinning", &LSDAdvance::setAngleBinning, LSDAdvance::ANGLE_BINS_STRICT, LSDAdvance::ANGLE_BINS_NEIGHBOURS },
-    };
-}
-
-void expectRealValueRejectedByEverySetter(double value, bool skipIfInRange)
-{
-    for (const RealSetter& p : realSetters())
+    for (const ParameterAccess& p : everyParameter())
     {
-        const bool inRange = (p.loIncluded ? value >= p.lo : value > p.lo) && value <= p.hi;
-        if (skipIfInRange && inRange)
+        if (p.integral)
             continue;
-        SCOPED_TRACE(cv::format("%s = %g", p.name, value));
-        ASSERT_FALSE(inRange);
-        expectRejectedAndStillCorrect([&](LSDAdvance& d) { (d.*p.set)(value); }, { p.name, "finite" });
+        SCOPED_TRACE(cv::format("%s = %g", p.name.c_str(), value));
+        ASSERT_FALSE(p.range.accepts(value));
+        expectRejectedAndStillCorrect([&](LSDAdvance& d) { p.set(d, value); }, { p.name, "finite" });
     }
 }
 
 TEST(LSDAdvance_InputContract, NaN_is_rejected_by_every_real_setter)
 {
-    expectRealValueRejectedByEverySetter(kNaN, false);
+    expectRealValueRejectedByEverySetter(kNaN);
 }
 
 TEST(LSDAdvance_InputContract, infinities_are_rejected_by_every_real_setter)
 {
-    expectRealValueRejectedByEverySetter(kInf, false);
-    expectRealValueRejectedByEverySetter(-kInf, false);
+    expectRealValueRejectedByEverySetter(kInf);
+    expectRealValueRejectedByEverySetter(-kInf);
 }
 
 TEST(LSDAdvance_InputContract, huge_values_are_rejected_by_every_real_setter)
 {
-    expectRealValueRejectedByEverySetter(1e300, false);
-    expectRealValueRejectedByEverySetter(-DBL_MAX, false);
+    expectRealValueRejectedByEverySetter(1e300);
+    expectRealValueRejectedByEverySetter(-DBL_MAX);
 }
 
-TEST(LSDAdvance_InputContract, negative_values_are_rejected_where_out_of_range)
+TEST(LSDAdvance_InputContract, values_outside_each_range_are_rejected_naming_the_parameter)
 {
-    // lsdLogEps accepts negative values down to -1000.
-    expectRealValueRejectedByEverySetter(-1e-3, true);
-    expectRealValueRejectedByEverySetter(-1001, false);
-}
-
-TEST(LSDAdvance_InputContract, zero_is_rejected_where_the_range_excludes_it)
-{
-    expectRealValueRejectedByEverySetter(0.0, true);
-}
-
-TEST(LSDAdvance_InputContract, zero_is_accepted_where_the_range_includes_it)
-{
-    const Mat img = sequenceFrames()[1];
-    for (const RealSetter& p : realSetters())
-    {
-        if (!p.loIncluded || p.lo != 0)
-            continue;
-        SCOPED_TRACE(p.name);
-        Ptr<LSDAdvance> detector = createLSDAdvance();
-        ASSERT_NO_THROW((detector->*p.set)(0.0));
-        std::vector<Vec4f> lines;
-        ASSERT_NO_THROW(detector->detect(img, lines));
-        expectInsideImage(lines, img.size(), kOutputMargin);
-    }
+    for (const ParameterAccess& p : everyParameter())
+        for (double value : outsideValues(p.range))
+        {
+            SCOPED_TRACE(cv::format("%s = %g", p.name.c_str(), value));
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { p.set(d, value); }, { p.name, p.range.describe() });
+        }
 }
 
 TEST(LSDAdvance_InputContract, out_of_range_integers_are_rejected_by_every_int_setter)
 {
-    for (const IntSetter& p : intSetters())
-        for (int value : { INT_MIN, p.lo - 1, p.hi + 1, INT_MAX })
+    for (const ParameterAccess& p : everyParameter())
+        if (p.integral && p.range.kind != lsda::Range::FLAG)
+            for (int value : { INT_MIN, INT_MAX })
+            {
+                SCOPED_TRACE(cv::format("%s = %d", p.name.c_str(), value));
+                expectRejectedAndStillCorrect([&](LSDAdvance& d) { p.set(d, value); },
+                                              { p.name, cv::format("%d", value) });
+            }
+}
+
+TEST(LSDAdvance_InputContract, every_value_at_the_ends_of_each_range_gives_lines_inside_the_image)
+{
+    const Mat img = sequenceFrames()[1];
+    for (const ParameterAccess& p : everyParameter())
+        for (double value : insideValues(p.range))
         {
-            SCOPED_TRACE(cv::format("%s = %d", p.name, value));
-            expectRejectedAndStillCorrect([&](LSDAdvance& d) { (d.*p.set)(value); },
-                                          { p.name, cv::format("%d", value) });
+            SCOPED_TRACE(cv::format("%s = %g", p.name.c_str(), value));
+            Ptr<LSDAdvance> detector = createLSDAdvance();
+            if (p.base >= 0)
+                detector->setBaseDetector(p.base);
+            ASSERT_NO_THROW(p.set(*detector, value));
+            std::vector<Vec4f> lines;
+            ASSERT_NO_THROW(detector->detect(img, lines));
+            expectInsideImage(lines, img.size());
         }
 }
 
-TEST(LSDAdvance_InputContract, factory_rejects_bad_arguments)
+TEST(LSDAdvance_InputContract, factory_rejects_an_unknown_preset_naming_the_presets)
 {
-    EXPECT_THROW(createLSDAdvance(-1), cv::Exception);
-    EXPECT_THROW(createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, kNaN), cv::Exception);
-    EXPECT_THROW(createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, kInf), cv::Exception);
-    EXPECT_THROW(createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, -0.5), cv::Exception);
+    for (int preset : { -1, 4, INT_MAX })
+    {
+        SCOPED_TRACE(preset);
+        try
+        {
+            createLSDAdvance((LSDAdvance::Preset)preset);
+            ADD_FAILURE() << "preset accepted";
+        }
+        catch (const cv::Exception& e)
+        {
+            EXPECT_NE(std::string::npos, e.err.find("PRESET_MOST_ACCURATE")) << e.err;
+        }
+    }
 }
 
 //--- processSegments
@@ -555,6 +514,67 @@ TEST(LSDAdvance_InputContract, empty_segment_set_gives_no_lines)
     EXPECT_EQ(0, detector->getLastStats().baseSegments);
 }
 
+//--- clipping to the image ("Output.")
+
+TEST(LSDAdvance_InputContract, a_segment_reaching_past_the_image_is_clipped_along_its_own_line)
+{
+    const Size size(100, 50);  // domain [-0.5, 99.5] x [-0.5, 49.5]
+    Vec4f clipped;
+    // Inside (the edges included): unchanged.
+    for (const Vec4f& s : { Vec4f(10, 10, 90, 40), Vec4f(-0.5f, -0.5f, 99.5f, 49.5f) })
+    {
+        ASSERT_TRUE(lsda::clipToDomain(s, size, clipped)) << s;
+        EXPECT_EQ(s, clipped);
+    }
+    // Past the left and the right edge: cut there, on the same line, in the same direction.
+    ASSERT_TRUE(lsda::clipToDomain(Vec4f(-10.5f, 20, 109.5f, 32), size, clipped));
+    EXPECT_NEAR(-0.5, clipped[0], 1e-5);
+    EXPECT_NEAR(21, clipped[1], 1e-4);
+    EXPECT_NEAR(99.5, clipped[2], 1e-5);
+    EXPECT_NEAR(31, clipped[3], 1e-4);
+    // Pointing the other way: it still does.
+    ASSERT_TRUE(lsda::clipToDomain(Vec4f(50, 60, 50, 20), size, clipped));
+    EXPECT_EQ(Vec4f(50, 49.5f, 50, 20), clipped);
+    // Nothing left: outside, or touching the domain at one corner only.
+    EXPECT_FALSE(lsda::clipToDomain(Vec4f(-5, -5, -1, 60), size, clipped));
+    EXPECT_FALSE(lsda::clipToDomain(Vec4f(-10.5f, 9.5f, 9.5f, -10.5f), size, clipped));
+    EXPECT_FALSE(lsda::clipToDomain(Vec4f(200, 20, 200, 20), size, clipped));
+    EXPECT_FALSE(lsda::clipToDomain(Vec4f(3, 3, 3, 3), size, clipped));
+}
+
+TEST(LSDAdvance_InputContract, processSegments_clips_only_when_given_the_image_size)
+{
+    const std::vector<Vec4f> segments = { Vec4f(-20, 10, 60, 10), Vec4f(10, 20, 30, 20), Vec4f(150, 5, 170, 5) };
+    Ptr<LSDAdvance> d = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE);
+    std::vector<Vec4f> lines;
+    d->processSegments(segments, lines);
+    EXPECT_EQ(segments, lines);
+    d->processSegments(segments, lines, Size(100, 40));
+    const std::vector<Vec4f> expected = { Vec4f(-0.5f, 10, 60, 10), Vec4f(10, 20, 30, 20) };
+    EXPECT_EQ(expected, lines);
+    EXPECT_EQ(2, d->getLastStats().outputSegments);
+    EXPECT_THROW(d->processSegments(segments, lines, Size(-1, 10)), cv::Exception);
+}
+
+TEST(LSDAdvance_InputContract, fused_segments_reaching_past_the_image_are_clipped)
+{
+    // Collinear pieces along a slanted line that leaves the image: merging extends the fused
+    // segment to the projections of its pieces, clipping brings it back inside.
+    std::vector<Vec4f> pieces;
+    for (int k = 0; k < 6; k++)
+        pieces.push_back(segmentAt(-4 + 20 * k, 2 + 4 * k, std::atan2(4.0, 20.0) * 180 / CV_PI, 17));
+    const Size size(100, 40);
+    Ptr<LSDAdvance> d = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE);
+    std::vector<Vec4f> unclipped, lines;
+    d->processSegments(pieces, unclipped);
+    d->processSegments(pieces, lines, size);
+    ASSERT_EQ(1u, unclipped.size());
+    ASSERT_EQ(1u, lines.size());
+    EXPECT_LT(unclipped[0][0], -0.5f);
+    expectInsideImage(lines, size);
+    EXPECT_NEAR(undirectedAngle(unclipped[0]), undirectedAngle(lines[0]), 1e-3);
+}
+
 //--- parameters through read()
 
 void readText(LSDAdvance& d, const std::string& text)
@@ -571,66 +591,66 @@ std::string yaml(const std::string& body)
 
 TEST(LSDAdvance_InputContract, read_rejects_non_finite_and_out_of_range_values_naming_the_parameter)
 {
-    for (const RealSetter& p : realSetters())
-        for (const char* value : { ".nan", ".inf", "-.inf", "1e300", "-1e300", "-1001" })
+    for (const ParameterAccess& p : everyParameter())
+    {
+        std::vector<std::string> values;
+        for (double v : outsideValues(p.range))
+            values.push_back(cv::format("%.17g", v));
+        if (!p.integral)
+            values.insert(values.end(), { ".nan", ".inf", "-.inf", "1e300", "-1e300" });
+        else if (p.range.kind != lsda::Range::FLAG)
+            values.insert(values.end(), { cv::format("%d", INT_MIN), cv::format("%d", INT_MAX) });
+        for (const std::string& value : values)
         {
-            const std::string text = yaml(std::string(p.name) + ": " + value);
+            const std::string text = yamlOf(p, value);
             SCOPED_TRACE(text);
-            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { p.name });
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { p.key });
         }
-    for (const IntSetter& p : intSetters())
-        for (int value : { INT_MIN, p.lo - 1, p.hi + 1, INT_MAX })
-        {
-            const std::string text = yaml(cv::format("%s: %d", p.name, value));
-            SCOPED_TRACE(text);
-            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { p.name });
-        }
+    }
 }
 
 TEST(LSDAdvance_InputContract, read_rejects_wrong_types_naming_the_parameter)
 {
-    const char* wrongForReal[] = { "\"0.5\"", "[ 0.5, 0.6 ]", "{ value: 0.5 }", "abc" };
-    const char* wrongForInt[] = { "1.5", "\"1\"", "[ 1 ]", "{ value: 1 }", "1e3" };
-    for (const char* name : { "mergeThreshold", "lsdScale", "endpointDistance" })
-        for (const char* value : wrongForReal)
+    const std::vector<const char*> wrongForReal = { "\"0.5\"", "[ 0.5, 0.6 ]", "{ value: 0.5 }", "abc" };
+    const std::vector<const char*> wrongForInt = { "1.5", "\"1\"", "[ 1 ]", "{ value: 1 }", "1e3" };
+    for (const ParameterAccess& p : everyParameter())
+        for (const char* value : p.integral ? wrongForInt : wrongForReal)
         {
-            const std::string text = yaml(std::string(name) + ": " + value);
+            const std::string text = yamlOf(p, value);
             SCOPED_TRACE(text);
-            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { name, "number" });
-        }
-    for (const IntSetter& p : intSetters())
-        for (const char* value : wrongForInt)
-        {
-            const std::string text = yaml(std::string(p.name) + ": " + value);
-            SCOPED_TRACE(text);
-            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { p.name, "integer" });
+            // A string for an enumerated value is a name; an unknown name lists the known ones.
+            const bool name = p.range.kind == lsda::Range::ENUM && value == std::string("\"1\"");
+            expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); },
+                                          { p.key, name ? p.range.describe() : (p.integral ? "" : "number") });
         }
 }
 
 TEST(LSDAdvance_InputContract, read_of_a_file_with_a_bad_value_changes_no_parameter)
 {
     // Valid values before and after the bad one: none of them may be applied.
-    const std::string text = yaml("lsdScale: 0.5\nmergeThreshold: .nan\nendpointDistance: 4\nlengthFilterMode: 1");
+    const std::string text = yaml("lsd: { scale: 0.5 }\nmergeThreshold: .nan\nendpointDistance: 4\nlengthFilterMode: 0");
     expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { "mergeThreshold" });
     Ptr<LSDAdvance> detector = createLSDAdvance();
     EXPECT_THROW(readText(*detector, text), cv::Exception);
-    EXPECT_EQ(1.0, detector->getLsdScale());
+    EXPECT_EQ(1.0, detector->getLSDParams().scale);
     EXPECT_EQ(10.0, detector->getEndpointDistance());
-    EXPECT_EQ(LSDAdvance::LENGTH_FILTER_INTERFRAME, detector->getLengthFilterMode());
+    EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, detector->getLengthFilterMode());
 }
 
 TEST(LSDAdvance_InputContract, read_of_a_file_without_values_keeps_every_parameter)
 {
-    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 3.0, 0.7);
-    detector->setLsdScale(0.8);
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME, 3.0, 0.7);
+    LSDAdvance::LSDParams lsd = detector->getLSDParams();
+    lsd.scale = 0.8;
+    detector->setLSDParams(lsd);
     for (const std::string& text : { yaml("{}"), yaml("format: 3") })
     {
         SCOPED_TRACE(text);
         ASSERT_NO_THROW(readText(*detector, text));
-        EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, detector->getLengthFilterMode());
+        EXPECT_EQ(LSDAdvance::LENGTH_FILTER_INTERFRAME, detector->getLengthFilterMode());
         EXPECT_EQ(3.0, detector->getEndpointDistance());
         EXPECT_EQ(0.7, detector->getMergeThreshold());
-        EXPECT_EQ(0.8, detector->getLsdScale());
+        EXPECT_EQ(0.8, detector->getLSDParams().scale);
     }
 }
 
@@ -638,14 +658,17 @@ TEST(LSDAdvance_InputContract, read_of_a_future_file_ignores_unknown_keys)
 {
     // A later version may add parameters of any type; the known ones are still applied.
     const std::string text = yaml("format: 99\nfutureDetectorKind: 7\nfutureWeights: [ 1, 2, 3 ]\n"
-                                  "futureBlock: { a: 1, b: \"x\" }\nmergeThreshold: 0.7\nlsdScale: 0.5");
+                                  "futureBlock: { a: 1, b: \"x\" }\nmergeThreshold: 0.7\n"
+                                  "lsd: { scale: 0.5, futureLsdParameter: 2 }");
     Ptr<LSDAdvance> detector = createLSDAdvance();
     ASSERT_NO_THROW(readText(*detector, text));
     EXPECT_EQ(0.7, detector->getMergeThreshold());
-    EXPECT_EQ(0.5, detector->getLsdScale());
+    EXPECT_EQ(0.5, detector->getLSDParams().scale);
 
-    Ptr<LSDAdvance> expected = createLSDAdvance(LSDAdvance::LENGTH_FILTER_INTERFRAME, 10.0, 0.7);
-    expected->setLsdScale(0.5);
+    Ptr<LSDAdvance> expected = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, 0.7);
+    LSDAdvance::LSDParams lsd = expected->getLSDParams();
+    lsd.scale = 0.5;
+    expected->setLSDParams(lsd);
     const Mat img = sequenceFrames()[1];
     std::vector<Vec4f> a, b;
     detector->detect(img, a);
@@ -657,7 +680,7 @@ TEST(LSDAdvance_InputContract, read_of_a_file_from_disk_with_an_unknown_key_and_
 {
     const String path = cv::tempfile(".yml");
     {
-        Ptr<LSDAdvance> saved = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 5.0, 0.65);
+        Ptr<LSDAdvance> saved = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 5.0, 0.65);
         FileStorage fs(path, FileStorage::WRITE);
         fs << saved->getDefaultName() << "{";
         saved->write(fs);

@@ -61,14 +61,14 @@ TEST(LSDAdvance_LengthFilter, capped_minLength_is_the_paper_value_up_to_std_equa
     double mean, stddev;
     meanAndStd(narrow, mean, stddev);
     EXPECT_NEAR(lsda::adaptiveMinLength(segmentsOfLengths(narrow), 0.9),
-                lsda::adaptiveMinLength(segmentsOfLengths(narrow), 0.9, lsda::LengthThreshold::CAPPED), 1e-9);
+                lsda::adaptiveMinLength(segmentsOfLengths(narrow), 0.9, LSDAdvance::LENGTH_THRESHOLD_CAPPED), 1e-9);
     // A few long segments among many short ones: std > 2 mean, the paper's threshold is 0.
     std::vector<double> heavy(9, 1.0);
     heavy.push_back(1000);
     meanAndStd(heavy, mean, stddev);
     ASSERT_GT(stddev, 2 * mean);
-    EXPECT_NEAR(1.1 * mean, lsda::adaptiveMinLength(segmentsOfLengths(heavy), 1.1, lsda::LengthThreshold::CAPPED), 1e-3);
-    EXPECT_EQ(0.0, lsda::adaptiveMinLength(std::vector<Vec4f>(), 1.0, lsda::LengthThreshold::CAPPED));
+    EXPECT_NEAR(1.1 * mean, lsda::adaptiveMinLength(segmentsOfLengths(heavy), 1.1, LSDAdvance::LENGTH_THRESHOLD_CAPPED), 1e-3);
+    EXPECT_EQ(0.0, lsda::adaptiveMinLength(std::vector<Vec4f>(), 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED));
 }
 
 TEST(LSDAdvance_LengthFilter, minLength_is_zero_without_segments)
@@ -186,10 +186,10 @@ TEST(LSDAdvance_LengthFilter, keeps_long_or_strong_segments_in_order_and_the_res
     const std::vector<double> values = { 0.5, 0.0625, 0.125, 0.25, 0.0 };
     double mean, stddev;
     meanAndStd(values, mean, stddev);
-    EXPECT_NEAR(0.9 * std::min(mean, stddev), lsda::adaptiveMinResponse(responses, 0.9, lsda::LengthThreshold::CAPPED), 1e-8);
+    EXPECT_NEAR(0.9 * std::min(mean, stddev), lsda::adaptiveMinResponse(responses, 0.9, LSDAdvance::LENGTH_THRESHOLD_CAPPED), 1e-8);
     EXPECT_NEAR(std::max(0.0, (1 - std::abs(mean - stddev) / mean) * mean),
-                lsda::adaptiveMinResponse(responses, 1.0, lsda::LengthThreshold::PAPER), 1e-8);
-    EXPECT_EQ(0.0, lsda::adaptiveMinResponse(std::vector<float>(), 1.0, lsda::LengthThreshold::CAPPED));
+                lsda::adaptiveMinResponse(responses, 1.0, LSDAdvance::LENGTH_THRESHOLD_PAPER), 1e-8);
+    EXPECT_EQ(0.0, lsda::adaptiveMinResponse(std::vector<float>(), 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED));
 }
 
 TEST(LSDAdvance_LengthFilter, countAtLeast_counts_segments_not_shorter_than_the_length)

@@ -113,16 +113,29 @@ Mat faintLongStrongShort()
     return img;
 }
 
+// Stage 1's output of the last call (before the clipping to the image).
+std::vector<Vec4f> filteredOf(const LSDAdvance& detector)
+{
+    std::vector<Vec4f> base, filtered, merged;
+    std::vector<int> labels;
+    detector.getLastStageOutputs(base, filtered, labels, merged);
+    return filtered;
+}
+
 TEST(LSDAdvance_LineResponse, stage1_keeps_short_strong_segments_only_when_asked)
 {
     const Mat img = faintLongStrongShort();
-    Ptr<LSDAdvance> strong = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
-    Ptr<LSDAdvance> lengthOnly = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
-    ASSERT_TRUE(strong->getKeepStrongSegments());
-    lengthOnly->setKeepStrongSegments(false);
-    std::vector<Vec4f> withStrong, longOnly;
-    strong->detect(img, withStrong);
-    lengthOnly->detect(img, longOnly);
+    Ptr<LSDAdvance> lengthOnly = createLSDAdvance(), strong = createLSDAdvance();
+    // Off by default (and in the paper's and the fastest preset), on in the sequence preset.
+    ASSERT_FALSE(lengthOnly->getKeepStrongSegments());
+    EXPECT_FALSE(createLSDAdvance(LSDAdvance::PRESET_PAPER)->getKeepStrongSegments());
+    EXPECT_FALSE(createLSDAdvance(LSDAdvance::PRESET_FASTEST)->getKeepStrongSegments());
+    EXPECT_TRUE(createLSDAdvance(LSDAdvance::PRESET_SEQUENCE)->getKeepStrongSegments());
+    strong->setKeepStrongSegments(true);
+    std::vector<Vec4f> lines;
+    strong->detect(img, lines);
+    lengthOnly->detect(img, lines);
+    const std::vector<Vec4f> withStrong = filteredOf(*strong), longOnly = filteredOf(*lengthOnly);
     const LSDAdvanceStats s = strong->getLastStats(), l = lengthOnly->getLastStats();
     EXPECT_EQ(0.0, l.minResponse);
     ASSERT_GT(s.minResponse, 0.0);
@@ -145,12 +158,12 @@ TEST(LSDAdvance_LineResponse, stage1_keeps_short_strong_segments_only_when_asked
 
     // The parameter is saved and loaded.
     FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
-    lengthOnly->write(out);
+    strong->write(out);
     const std::string text = out.releaseAndGetString();
     FileStorage in(text, FileStorage::READ | FileStorage::MEMORY);
     Ptr<LSDAdvance> loaded = createLSDAdvance();
     loaded->read(in.root());
-    EXPECT_FALSE(loaded->getKeepStrongSegments());
+    EXPECT_TRUE(loaded->getKeepStrongSegments());
 }
 
 }} // namespace

@@ -53,17 +53,8 @@ std::vector<Vec4f> detectBase(const Mat& image)
 {
     const Ptr<LSDAdvance> d = createLSDAdvance();
     EXPECT_EQ(LSDAdvance::BASE_FAST_LSD, d->getBaseDetector());
-    lsda::LsdParams p;
-    p.refine = d->getLsdRefine();
-    p.scale = d->getLsdScale();
-    p.sigmaScale = d->getLsdSigmaScale();
-    p.quant = d->getLsdQuant();
-    p.angleTolerance = d->getLsdAngleTolerance();
-    p.logEps = d->getLsdLogEps();
-    p.densityThreshold = d->getLsdDensityThreshold();
-    p.numBins = d->getLsdNumBins();
     std::vector<Vec4f> lines;
-    lsda::FastLsd(p).detect(image, lines);
+    lsda::FastLsd(d->getLSDParams()).detect(image, lines);
     return lines;
 }
 
@@ -163,8 +154,7 @@ TEST(LSDAdvance_Detect, short_clutter_is_removed_and_long_edges_stay)
     const Mat img = clutterImage(42);
     Ptr<LSDAdvance> detector = createLSDAdvance();
     detector->setBaseDetector(LSDAdvance::BASE_LSD);
-    detector->setLsdRefine(LSD_REFINE_STD);
-    detector->setLsdScale(0.8);
+    detector->setLSDParams(createLSDAdvance(LSDAdvance::PRESET_PAPER)->getLSDParams());
     const std::vector<Vec4f> lines = detectLines(detector, img);
     const LSDAdvanceStats stats = detector->getLastStats();
     const std::vector<Vec4f> base = detectLsd(img);
@@ -193,7 +183,7 @@ TEST(LSDAdvance_Detect, stats_report_every_stage_in_the_paper_order)
     const LSDAdvanceStats stats = detector->getLastStats();
     const std::vector<Vec4f> base = detectBase(img);
     EXPECT_EQ((int)base.size(), stats.baseSegments);
-    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, lsda::LengthThreshold::CAPPED), stats.minLength, 1e-9);
+    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED), stats.minLength, 1e-9);
     EXPECT_EQ(1.0, stats.alpha);
     std::vector<Vec4f> kept;
     lsda::dropShortSegments(base, stats.minLength, kept);
@@ -216,7 +206,7 @@ TEST(LSDAdvance_Detect, length_threshold_scale_multiplies_the_threshold_and_keep
     const std::vector<Vec4f> full = detectLines(detector, img);
     detector->setLengthThresholdScale(0.5);
     const std::vector<Vec4f> half = detectLines(detector, img);
-    EXPECT_NEAR(0.5 * lsda::adaptiveMinLength(detectBase(img), 1.0, lsda::LengthThreshold::CAPPED),
+    EXPECT_NEAR(0.5 * lsda::adaptiveMinLength(detectBase(img), 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED),
                 detector->getLastStats().minLength, 1e-9);
     EXPECT_GT(half.size(), full.size());
 }
@@ -230,7 +220,7 @@ TEST(LSDAdvance_Detect, stats_report_every_stage_when_merging_first)
     const LSDAdvanceStats stats = detector->getLastStats();
     const std::vector<Vec4f> base = detectBase(img);
     EXPECT_EQ((int)base.size(), stats.baseSegments);
-    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, lsda::LengthThreshold::CAPPED), stats.minLength, 1e-9);
+    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED), stats.minLength, 1e-9);
     EXPECT_LT(stats.mergedSegments, stats.baseSegments);
     EXPECT_LT(stats.filteredSegments, stats.mergedSegments);
     EXPECT_EQ((int)lines.size(), stats.filteredSegments);
@@ -268,12 +258,16 @@ TEST(LSDAdvance_Detect, processSegments_runs_the_stages_on_given_segments)
     const Mat img = buildingImage();
     const std::vector<Vec4f> base = detectBase(img);
     Ptr<LSDAdvance> fromImage = createLSDAdvance(), fromSegments = createLSDAdvance();
-    // Without the image there are no responses: stage 1 keeps long segments only.
-    fromImage->setKeepStrongSegments(false);
     std::vector<Vec4f> expected = detectLines(fromImage, img), lines;
-    fromSegments->processSegments(base, lines);
+    fromSegments->processSegments(base, lines, img.size());
     EXPECT_EQ(expected, lines);
-    EXPECT_LT(lines.size(), detectLines(createLSDAdvance(), img).size());
+    // Without the image there are no responses: with keepStrongSegments too, stage 1 keeps long
+    // segments only, where detect() also keeps short strong ones.
+    fromSegments->setKeepStrongSegments(true);
+    fromSegments->processSegments(base, lines, img.size());
+    EXPECT_EQ(expected, lines);
+    fromImage->setKeepStrongSegments(true);
+    EXPECT_LT(lines.size(), detectLines(fromImage, img).size());
     EXPECT_EQ((int)base.size(), fromSegments->getLastStats().baseSegments);
     fromSegments->processSegments(std::vector<Vec4f>(), lines);
     EXPECT_TRUE(lines.empty());
@@ -302,7 +296,7 @@ TEST(LSDAdvance_Detect, processSegments_rejects_non_finite_and_huge_coordinates)
 TEST(LSDAdvance_Detect, length_filter_none_keeps_every_segment)
 {
     const Mat img = clutterImage(3);
-    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE);
     detectLines(detector, img);
     LSDAdvanceStats stats = detector->getLastStats();
     EXPECT_EQ(stats.mergedSegments, stats.filteredSegments);
@@ -438,7 +432,7 @@ std::vector<Mat> changingFrames()
 
 TEST(LSDAdvance_Sequence, alpha_follows_the_kept_counts_of_the_two_previous_frames)
 {
-    Ptr<LSDAdvance> detector = createLSDAdvance();
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME);
     std::vector<int> kept;
     const std::vector<double> alphas = alphasOf(detector, changingFrames(), &kept);
     EXPECT_EQ(1.0, alphas[0]);
@@ -454,7 +448,7 @@ TEST(LSDAdvance_Sequence, alpha_follows_the_kept_counts_of_the_two_previous_fram
 
 TEST(LSDAdvance_Sequence, reset_starts_a_new_sequence)
 {
-    Ptr<LSDAdvance> detector = createLSDAdvance();
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME);
     const std::vector<Mat> frames = changingFrames();
     const std::vector<double> first = alphasOf(detector, frames);
     detector->reset();
@@ -463,7 +457,7 @@ TEST(LSDAdvance_Sequence, reset_starts_a_new_sequence)
 
 TEST(LSDAdvance_Sequence, replay_after_reset_gives_identical_lines)
 {
-    Ptr<LSDAdvance> detector = createLSDAdvance();
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME);
     const std::vector<Mat> frames = changingFrames();
     std::vector<std::vector<Vec4f> > first;
     for (const Mat& f : frames)
@@ -478,12 +472,15 @@ TEST(LSDAdvance_Sequence, every_setter_resets_the_sequence)
     // Every parameter can change the kept counts (merging runs before the filter by default).
     const std::vector<Mat> frames = changingFrames();
     const std::vector<std::function<void(LSDAdvance&)> > setters = {
-        [](LSDAdvance& d) { d.setLsdScale(1.0); },
+        [](LSDAdvance& d) { d.setLSDParams(d.getLSDParams()); },
+        [](LSDAdvance& d) { d.setFLDParams(d.getFLDParams()); },
+        [](LSDAdvance& d) { d.setEDLinesParams(d.getEDLinesParams()); },
+        [](LSDAdvance& d) { d.setParams(d.getParams()); },
         [](LSDAdvance& d) { d.setLengthFilterMode(LSDAdvance::LENGTH_FILTER_INTERFRAME); },
         [](LSDAdvance& d) { d.setMergeThreshold(0.6); },
         [](LSDAdvance& d) { d.setEndpointDistance(10.0); },
     };
-    Ptr<LSDAdvance> detector = createLSDAdvance();
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME);
     ASSERT_NE(1.0, alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 3))[2]);
     for (size_t i = 0; i < setters.size(); i++)
     {
@@ -498,7 +495,7 @@ TEST(LSDAdvance_Sequence, every_setter_resets_the_sequence)
 TEST(LSDAdvance_Sequence, each_interframe_mode_uses_its_rule)
 {
     const std::vector<Mat> frames = changingFrames();
-    Ptr<LSDAdvance> continuous = createLSDAdvance(LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS);
+    Ptr<LSDAdvance> continuous = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS);
     std::vector<int> kept;
     std::vector<double> alphas = alphasOf(continuous, frames, &kept);
     for (size_t k = 2; k < frames.size(); k++)
@@ -508,8 +505,8 @@ TEST(LSDAdvance_Sequence, each_interframe_mode_uses_its_rule)
     }
 
     // Count tracking compares this frame's count at alpha = 1 with the two previous kept counts.
-    Ptr<LSDAdvance> tracking = createLSDAdvance(LSDAdvance::LENGTH_FILTER_COUNT_TRACKING);
-    Ptr<LSDAdvance> unit = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
+    Ptr<LSDAdvance> tracking = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_COUNT_TRACKING);
+    Ptr<LSDAdvance> unit = createLSDAdvance();
     kept.clear();
     alphas = alphasOf(tracking, frames, &kept);
     EXPECT_EQ(1.0, alphas[0]);
@@ -526,9 +523,28 @@ TEST(LSDAdvance_Sequence, each_interframe_mode_uses_its_rule)
 
 TEST(LSDAdvance_Sequence, adaptive_mode_ignores_previous_frames)
 {
-    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
     for (double alpha : alphasOf(detector, changingFrames()))
         EXPECT_EQ(1.0, alpha);
+}
+
+TEST(LSDAdvance_Sequence, the_default_detector_is_stateless)
+{
+    // Like LSD and FLD: building.jpg gives the same lines on a fresh detector and after others.
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    const std::vector<Vec4f> fresh = detectLines(detector, buildingImage());
+    for (const char* other : { "graf1.png", "graf3.png" })
+        detectLines(detector, imread(samples::findFile(other), IMREAD_GRAYSCALE));
+    EXPECT_EQ(fresh, detectLines(detector, buildingImage()));
+    EXPECT_EQ(1.0, detector->getLastStats().alpha);
+}
+
+TEST(LSDAdvance_Sequence, the_sequence_preset_tracks_the_count)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::PRESET_SEQUENCE);
+    EXPECT_EQ(LSDAdvance::LENGTH_FILTER_COUNT_TRACKING, detector->getLengthFilterMode());
+    const std::vector<double> alphas = alphasOf(detector, changingFrames());
+    EXPECT_NE(1.0, alphas[2]);
 }
 
 }} // namespace

@@ -368,12 +368,15 @@ TEST(LSDAdvance_Matching, equal_budget_homography_pairs_more_correct_matches_and
     }
 }
 
-TEST(LSDAdvance_Matching, equal_budget_kitti_more_consistent_matches_and_tracks_than_LSDs)
+TEST(LSDAdvance_Matching, equal_budget_kitti_sequence_preset_more_consistent_matches_and_tracks_than_LSDs)
 {
     const SequenceData sequence = loadSequence(dataFolder("kitti_seq1"));
     ASSERT_FALSE(sequence.poses.empty());
     Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
-    Ptr<LSDAdvance> ours = createLSDAdvance();  // the frames are a sequence
+    // The frames are a sequence: the video/SLAM preset, which keeps short strong segments (with
+    // the defaults, at 400 lines per frame, the consistent matches fall just short of LSD's:
+    // doc/matching.md).
+    Ptr<LSDAdvance> ours = createLSDAdvance(LSDAdvance::PRESET_SEQUENCE);
     MatchCounts counts[3][2];                   // [budget][LSD, LSDAdvance], consistent among decided
     LineTracks tracks[3][2];
     DescribedLines previous[3][2];

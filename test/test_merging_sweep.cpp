@@ -6,10 +6,11 @@
 // These tests compare it with the rule written out over every pair of a group.
 
 #include "test_precomp.hpp"
+#include "../src/segment_merging.hpp"
 
 namespace opencv_test { namespace {
 
-bool passesReference(const Vec4f& base, const Vec4f& seg, const lsda::MergeParams& p, double& score)
+bool passesReference(const Vec4f& base, const Vec4f& seg, const LSDAdvance::Params& p, double& score)
 {
     if (lsda::perpendicularOffset(base, seg) > p.maxPerpendicularOffset)
         return false;
@@ -22,7 +23,7 @@ bool passesReference(const Vec4f& base, const Vec4f& seg, const lsda::MergeParam
 
 // MERGE_LONGEST_FIRST over every pair: from the longest down, absorb the best-scoring shorter
 // segment (ties: the earlier in length order) until none passes.
-void longestFirstReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const lsda::MergeParams& p)
+void longestFirstReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const LSDAdvance::Params& p)
 {
     const int n = (int)g.size();
     std::vector<int> order(n);
@@ -55,7 +56,7 @@ void longestFirstReference(std::vector<Vec4f>& g, std::vector<char>& consumed, c
 }
 
 // MERGE_BASELINES over every pair: rounds of best-baseline candidates, fused best first.
-void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const lsda::MergeParams& p)
+void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const LSDAdvance::Params& p)
 {
     const int n = (int)g.size();
     double maxLength = 0;
@@ -101,7 +102,7 @@ void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, cons
 }
 
 std::vector<Vec4f> mergeReference(const std::vector<Vec4f>& segments, const lsda::SegmentGroups& groups,
-                                  const lsda::MergeParams& p)
+                                  const LSDAdvance::Params& p)
 {
     std::vector<Vec4f> merged;
     for (int gi = 0; gi < groups.count(); gi++)
@@ -110,9 +111,9 @@ std::vector<Vec4f> mergeReference(const std::vector<Vec4f>& segments, const lsda
         for (int k = groups.offsets[gi]; k < groups.offsets[gi + 1]; k++)
             g.push_back(segments[groups.members[k]]);
         std::vector<char> consumed(g.size(), 0);
-        if (g.size() > 1 && p.strategy == lsda::MergeStrategy::BASELINES)
+        if (g.size() > 1 && p.mergeStrategy == LSDAdvance::MERGE_BASELINES)
             baselinesReference(g, consumed, p);
-        else if (g.size() > 1 && p.strategy == lsda::MergeStrategy::LONGEST_FIRST)
+        else if (g.size() > 1 && p.mergeStrategy == LSDAdvance::MERGE_LONGEST_FIRST)
             longestFirstReference(g, consumed, p);
         for (size_t k = 0; k < g.size(); k++)
             if (!consumed[k])
@@ -158,8 +159,8 @@ typedef testing::TestWithParam<tuple<int, double, double> > LSDAdvance_MergingSw
 TEST_P(LSDAdvance_MergingSweepParams, equals_the_all_pairs_rule)
 {
     const int strategy = get<0>(GetParam());
-    lsda::MergeParams p;
-    p.strategy = (lsda::MergeStrategy)strategy;
+    LSDAdvance::Params p;
+    p.mergeStrategy = strategy;
     p.proximityRatio = get<1>(GetParam());
     p.mergeThreshold = get<2>(GetParam());
     for (int seed = 1; seed <= 6; seed++)
@@ -168,7 +169,7 @@ TEST_P(LSDAdvance_MergingSweepParams, equals_the_all_pairs_rule)
         RNG rng(seed);
         const std::vector<Vec4f> segments = fragmentedLines(rng, 40, 500.0);
         lsda::SegmentGroups groups;
-        lsda::groupSegments(segments, lsda::GroupingParams(), groups);
+        lsda::groupSegments(segments, LSDAdvance::Params(), groups);
         std::vector<Vec4f> merged;
         lsda::mergeGroups(segments, groups, p, merged);
         const std::vector<Vec4f> expected = mergeReference(segments, groups, p);
@@ -179,23 +180,23 @@ TEST_P(LSDAdvance_MergingSweepParams, equals_the_all_pairs_rule)
 }
 
 INSTANTIATE_TEST_CASE_P(/**/, LSDAdvance_MergingSweepParams,
-                        testing::Combine(testing::Values((int)lsda::MergeStrategy::LONGEST_FIRST,
-                                                         (int)lsda::MergeStrategy::BASELINES),
+                        testing::Combine(testing::Values((int)LSDAdvance::MERGE_LONGEST_FIRST,
+                                                         (int)LSDAdvance::MERGE_BASELINES),
                                          testing::Values(0.1, 1.0, 10.0), testing::Values(0.0, 0.6, 0.75)));
 
 TEST(LSDAdvance_MergingSweep, weights_without_proximity_equal_the_all_pairs_rule)
 {
     // With proximityWeight 0 the score cannot bound the distance: only Dth can.
-    lsda::MergeParams p;
+    LSDAdvance::Params p;
     p.proximityWeight = 0;
     p.mergeThreshold = 0.5;
     RNG rng(11);
     const std::vector<Vec4f> segments = fragmentedLines(rng, 30, 400.0);
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
-    for (lsda::MergeStrategy s : { lsda::MergeStrategy::LONGEST_FIRST, lsda::MergeStrategy::BASELINES })
+    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
+    for (int s : { LSDAdvance::MERGE_LONGEST_FIRST, LSDAdvance::MERGE_BASELINES })
     {
-        p.strategy = s;
+        p.mergeStrategy = s;
         std::vector<Vec4f> merged;
         lsda::mergeGroups(segments, groups, p, merged);
         EXPECT_EQ(mergeReference(segments, groups, p), merged);
@@ -215,9 +216,9 @@ TEST(LSDAdvance_MergingSweep, one_group_of_thousands_of_collinear_pieces_becomes
         x += piece + 1.0;
     }
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
+    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
     ASSERT_EQ(1, groups.count());
-    lsda::MergeParams p;
+    LSDAdvance::Params p;
     std::vector<Vec4f> merged;
     lsda::mergeGroups(segments, groups, p, merged);
     ASSERT_EQ(1u, merged.size());

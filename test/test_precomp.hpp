@@ -17,6 +17,7 @@
 
 namespace opencv_test {
 using namespace cv::ximgproc;
+using namespace cv::ximgproc::line_evaluation;
 
 //! Undirected angle of a segment in degrees, in [0, 180).
 inline double undirectedAngle(const Vec4f& s)
@@ -30,6 +31,28 @@ inline Vec4f segmentAt(double x, double y, double angleDeg, double length)
 {
     const double a = angleDeg * CV_PI / 180.0;
     return Vec4f((float)x, (float)y, (float)(x + length * std::cos(a)), (float)(y + length * std::sin(a)));
+}
+
+//! A detector at the defaults but for the length filter mode, the endpoint distance and the merge
+//! threshold.
+inline Ptr<LSDAdvance> createLSDAdvanceWith(int lengthFilterMode, double endpointDistance = 10.0,
+                                            double mergeThreshold = 0.6)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    LSDAdvance::Params p = detector->getParams();
+    p.lengthFilterMode = lengthFilterMode;
+    p.endpointDistance = endpointDistance;
+    p.mergeThreshold = mergeThreshold;
+    detector->setParams(p);
+    return detector;
+}
+
+//! OpenCV's LSD with the LSD parameters of a detector: its stage 0.
+inline Ptr<LineSegmentDetector> baseLsdOf(const LSDAdvance& detector)
+{
+    const LSDAdvance::LSDParams p = detector.getLSDParams();
+    return createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance, p.logEps,
+                                     p.densityThreshold, p.numBins);
 }
 
 //! Folder `set` of the evaluation data (LSD_ADVANCE_DATA_DIR). When it is missing the test is

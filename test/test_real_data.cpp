@@ -113,7 +113,7 @@ TEST(LSDAdvance_RealData, euroc_still_camera_count_tracking_steadies_the_segment
     const std::vector<Mat> frames = loadFrames("euroc_v101_static");
     ASSERT_EQ(95u, frames.size());
     const auto countStd = [&](int mode) {
-        Ptr<LSDAdvance> d = createLSDAdvance(mode);
+        Ptr<LSDAdvance> d = createLSDAdvanceWith(mode);
         const SequenceCounts s = runSequence([&](const Mat& g, std::vector<Vec4f>& l) { d->detect(g, l); }, frames);
         Scalar m, sd;
         meanStdDev(s.counts, m, sd);

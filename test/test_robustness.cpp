@@ -117,9 +117,9 @@ TEST(LSDAdvance_Determinism, two_runs_are_bit_identical_for_every_mode)
     for (int mode : kAllModes)
     {
         SCOPED_TRACE(mode);
-        const std::vector<FrameOutput> first = runSequence(*createLSDAdvance(mode), frames);
+        const std::vector<FrameOutput> first = runSequence(*createLSDAdvanceWith(mode), frames);
         expectModeActs(mode, first);
-        expectBitIdentical(first, runSequence(*createLSDAdvance(mode), frames));
+        expectBitIdentical(first, runSequence(*createLSDAdvanceWith(mode), frames));
     }
 }
 
@@ -131,9 +131,9 @@ TEST(LSDAdvance_Determinism, one_thread_and_all_threads_are_bit_identical_for_ev
     {
         SCOPED_TRACE(mode);
         setNumThreads(1);
-        const std::vector<FrameOutput> single = runSequence(*createLSDAdvance(mode), frames);
+        const std::vector<FrameOutput> single = runSequence(*createLSDAdvanceWith(mode), frames);
         setNumThreads(-1);  // OpenCV's default: all cores
-        const std::vector<FrameOutput> all = runSequence(*createLSDAdvance(mode), frames);
+        const std::vector<FrameOutput> all = runSequence(*createLSDAdvanceWith(mode), frames);
         setNumThreads(threads);
         expectBitIdentical(single, all);
     }
@@ -145,7 +145,7 @@ TEST(LSDAdvance_Determinism, replay_after_reset_is_bit_identical_for_every_mode)
     for (int mode : kAllModes)
     {
         SCOPED_TRACE(mode);
-        Ptr<LSDAdvance> detector = createLSDAdvance(mode);
+        Ptr<LSDAdvance> detector = createLSDAdvanceWith(mode);
         const std::vector<FrameOutput> first = runSequence(*detector, frames);
         detector->reset();
         expectBitIdentical(first, runSequence(*detector, frames));
@@ -157,7 +157,7 @@ TEST(LSDAdvance_Determinism, replay_without_reset_differs_for_interframe_modes)
     // The counter-check of the replay test: without reset() the replay continues the sequence,
     // so its first frames use the previous frames' counts.
     const std::vector<Mat> frames = mixedFrames();
-    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_COUNT_TRACKING);
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_COUNT_TRACKING);
     const std::vector<FrameOutput> first = runSequence(*detector, frames);
     const std::vector<FrameOutput> second = runSequence(*detector, frames);
     EXPECT_NE(first[0].alpha, second[0].alpha);
@@ -175,7 +175,7 @@ TEST(LSDAdvance_Concurrency, separate_instances_on_separate_threads_match_serial
     };
     std::vector<std::vector<FrameOutput> > serial(tasks), parallel(tasks);
     for (int t = 0; t < tasks; t++)
-        serial[t] = runSequence(*createLSDAdvance(kAllModes[t]), framesOf(t));
+        serial[t] = runSequence(*createLSDAdvanceWith(kAllModes[t]), framesOf(t));
 
     std::vector<std::thread> threads;
     std::vector<std::string> errors(tasks);
@@ -184,7 +184,7 @@ TEST(LSDAdvance_Concurrency, separate_instances_on_separate_threads_match_serial
             try
             {
                 const std::vector<Mat> mine = framesOf(t);
-                Ptr<LSDAdvance> detector = createLSDAdvance(kAllModes[t]);
+                Ptr<LSDAdvance> detector = createLSDAdvanceWith(kAllModes[t]);
                 // Three passes, so that the threads overlap in time.
                 for (int pass = 0; pass < 3; pass++)
                 {
@@ -249,7 +249,7 @@ std::vector<std::vector<Vec4f> > processWithEveryStrategy(const std::vector<Vec4
     for (int strategy : { LSDAdvance::MERGE_NONE, LSDAdvance::MERGE_BASELINES, LSDAdvance::MERGE_LONGEST_FIRST })
         for (int order : { LSDAdvance::FILTER_THEN_MERGE, LSDAdvance::MERGE_THEN_FILTER })
         {
-            Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, mergeThreshold);
+            Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, mergeThreshold);
             detector->setMergeStrategy(strategy);
             detector->setStageOrder(order);
             std::vector<Vec4f> lines;
@@ -286,7 +286,7 @@ TEST(LSDAdvance_DegenerateGeometry, zero_length_segments)
     std::cout << format("2550 segments, 2000 zero-length at one point: %.2f s for 12 runs", secondsSince(t0))
               << std::endl;
     // Without the length filter (which drops points), the 2000 coincident points fuse into one.
-    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE, 10.0, 0.5);
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE, 10.0, 0.5);
     std::vector<Vec4f> lines;
     detector->processSegments(segments, lines);
     int atTheSpot = 0;
@@ -403,7 +403,7 @@ TEST(LSDAdvance_DegenerateGeometry, one_huge_group_of_connected_fragments_become
     const int n = 3000;
     const std::vector<Vec4f> segments = fragmentedLine(n, 3, 3);
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
+    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
     ASSERT_EQ(1, groups.count());
 
     for (int strategy : { LSDAdvance::MERGE_LONGEST_FIRST, LSDAdvance::MERGE_BASELINES })
@@ -411,7 +411,7 @@ TEST(LSDAdvance_DegenerateGeometry, one_huge_group_of_connected_fragments_become
         SCOPED_TRACE(strategy);
         // With baselines, a long first piece is the only baseline and grows piece by piece.
         const std::vector<Vec4f> input = strategy == LSDAdvance::MERGE_BASELINES ? fragmentedLine(n, 3, 50) : segments;
-        Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE);
+        Ptr<LSDAdvance> detector = createLSDAdvance();
         detector->setMergeStrategy(strategy);
         std::vector<Vec4f> lines;
         const auto t0 = std::chrono::steady_clock::now();
@@ -440,7 +440,7 @@ TEST(LSDAdvance_DegenerateGeometry, segments_at_the_coordinate_bounds)
     for (double distance : { 0.1, 10.0, 200.0 })
     {
         SCOPED_TRACE(distance);
-        Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::LENGTH_FILTER_ADAPTIVE, distance);
+        Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, distance);
         std::vector<Vec4f> lines;
         ASSERT_NO_THROW(detector->processSegments(segments, lines));
         expectSaneOutput(segments, lines, 2.0f);

@@ -33,29 +33,6 @@ const Mat& buildingImage()
     return img;
 }
 
-lsda::GroupingParams groupingParamsOf(const LSDAdvance& d)
-{
-    lsda::GroupingParams p;
-    p.angleBinWidth = d.getAngleBinWidth();
-    p.neighbourBins = d.getAngleBinning() == LSDAdvance::ANGLE_BINS_NEIGHBOURS;
-    p.endpointDistance = d.getEndpointDistance();
-    return p;
-}
-
-lsda::MergeParams mergeParamsOf(const LSDAdvance& d)
-{
-    lsda::MergeParams p;
-    p.strategy = (lsda::MergeStrategy)d.getMergeStrategy();
-    p.baselineRatio = d.getBaselineRatio();
-    p.directionWeight = d.getDirectionWeight();
-    p.proximityWeight = d.getProximityWeight();
-    p.lengthWeight = d.getLengthWeight();
-    p.proximityRatio = d.getProximityRatio();
-    p.mergeThreshold = d.getMergeThreshold();
-    p.maxPerpendicularOffset = d.getMaxPerpendicularOffset();
-    return p;
-}
-
 // The segments stage 2 received: the base segments or stage 1's output, by the stage order.
 const std::vector<Vec4f>& stage2Input(const LSDAdvance& d, const StageOutputs& o)
 {
@@ -68,8 +45,17 @@ const std::vector<Vec4f>& stage1Input(const LSDAdvance& d, const StageOutputs& o
     return d.getStageOrder() == LSDAdvance::FILTER_THEN_MERGE ? o.base : o.merged;
 }
 
+// What detect() returns for the last stage's output: the segments clipped to the image.
+std::vector<Vec4f> clippedTo(const std::vector<Vec4f>& segments, const Size& size)
+{
+    std::vector<Vec4f> clipped;
+    std::vector<int> keptFrom;
+    lsda::clipToImage(segments, size, clipped, keptFrom);
+    return clipped;
+}
+
 // Runs a short sequence (so that inter-frame alpha acts) and checks the last frame's outputs
-// with `check` after every frame.
+// with `check` after every frame, for both stage orders, with and without strong segments.
 void forEachFrameOfBothOrders(
     const std::function<void(const LSDAdvance&, const Mat& frame, const std::vector<Vec4f>& lines)>& check)
 {
@@ -77,17 +63,19 @@ void forEachFrameOfBothOrders(
     ASSERT_FALSE(img.empty());
     const Mat frames[] = { img, img(Rect(0, 0, img.cols * 3 / 4, img.rows)), img(Rect(0, 0, img.cols / 2, img.rows)) };
     for (int order : { (int)LSDAdvance::FILTER_THEN_MERGE, (int)LSDAdvance::MERGE_THEN_FILTER })
-    {
-        SCOPED_TRACE(order);
-        Ptr<LSDAdvance> detector = createLSDAdvance();
-        detector->setStageOrder(order);
-        for (const Mat& frame : frames)
+        for (bool keepStrong : { false, true })
         {
-            std::vector<Vec4f> lines;
-            detector->detect(frame, lines);
-            check(*detector, frame, lines);
+            SCOPED_TRACE(cv::format("order %d, keepStrongSegments %d", order, (int)keepStrong));
+            Ptr<LSDAdvance> detector = createLSDAdvance();
+            detector->setStageOrder(order);
+            detector->setKeepStrongSegments(keepStrong);
+            for (const Mat& frame : frames)
+            {
+                std::vector<Vec4f> lines;
+                detector->detect(frame, lines);
+                check(*detector, frame, lines);
+            }
         }
-    }
 }
 
 TEST(LSDAdvance_StageOutputs, base_segments_are_what_the_base_alone_returns)
@@ -101,8 +89,8 @@ TEST(LSDAdvance_StageOutputs, base_segments_are_what_the_base_alone_returns)
         d->setBaseDetector(base);
         std::vector<Vec4f> lines, alone;
         d->detect(img, lines);
-        lsda::LsdParams p;  // the defaults of both
-        lsda::createBaseDetector((lsda::BaseKind)base, p, lsda::FldParams(), lsda::EdParams())->detect(img, alone);
+        lsda::createBaseDetector(base, LSDAdvance::LSDParams(), LSDAdvance::FLDParams(), EdgeDrawing::Params())
+            ->detect(img, alone);
         const StageOutputs o = stageOutputsOf(*d);
         ASSERT_GT(alone.size(), 100u);
         EXPECT_TRUE(bitIdentical(alone, o.base));
@@ -116,16 +104,24 @@ TEST(LSDAdvance_StageOutputs, filtered_segments_are_the_long_or_strong_ones_with
         const LSDAdvanceStats stats = d.getLastStats();
         ASSERT_GT(stats.minLength, 0.0);
         const std::vector<Vec4f>& input = stage1Input(d, o);
-        std::vector<float> baseResponses, responses;
-        lsda::lineResponses(frame, o.base, baseResponses);
-        lsda::lineResponses(frame, input, responses);
-        EXPECT_NEAR(stats.alpha * lsda::adaptiveMinResponse(baseResponses, 1.0, lsda::LengthThreshold::CAPPED),
-                    stats.minResponse, 1e-6 * stats.minResponse);
         std::vector<Vec4f> expected, longOnes;
-        lsda::keepLongOrStrong(input, responses, stats.minLength, stats.minResponse, expected);
         lsda::dropShortSegments(input, stats.minLength, longOnes);
-        EXPECT_LT(expected.size(), input.size());     // the filter dropped something
-        EXPECT_GT(expected.size(), longOnes.size());  // and kept short strong segments
+        if (d.getKeepStrongSegments())
+        {
+            std::vector<float> baseResponses, responses;
+            lsda::lineResponses(frame, o.base, baseResponses);
+            lsda::lineResponses(frame, input, responses);
+            EXPECT_NEAR(stats.alpha * lsda::adaptiveMinResponse(baseResponses, 1.0, d.getLengthThresholdRule()),
+                        stats.minResponse, 1e-6 * stats.minResponse);
+            lsda::keepLongOrStrong(input, responses, stats.minLength, stats.minResponse, expected);
+            EXPECT_GT(expected.size(), longOnes.size());  // short strong segments were kept
+        }
+        else
+        {
+            EXPECT_EQ(0.0, stats.minResponse);
+            expected = longOnes;
+        }
+        EXPECT_LT(expected.size(), input.size());  // the filter dropped something
         EXPECT_TRUE(bitIdentical(expected, o.filtered));
     });
 }
@@ -137,7 +133,7 @@ TEST(LSDAdvance_StageOutputs, group_labels_partition_the_stage2_input_as_groupSe
         const std::vector<Vec4f>& input = stage2Input(d, o);
         ASSERT_EQ(input.size(), o.labels.size());
         lsda::SegmentGroups groups;
-        lsda::groupSegments(input, groupingParamsOf(d), groups);
+        lsda::groupSegments(input, d.getParams(), groups);
         // Every member of a group has its group's label: -1 for a group of one, otherwise a
         // label no other group has.
         std::set<int> used;
@@ -171,9 +167,9 @@ TEST(LSDAdvance_StageOutputs, merged_segments_are_mergeGroups_of_the_stage2_inpu
         const StageOutputs o = stageOutputsOf(d);
         const std::vector<Vec4f>& input = stage2Input(d, o);
         lsda::SegmentGroups groups;
-        lsda::groupSegments(input, groupingParamsOf(d), groups);
+        lsda::groupSegments(input, d.getParams(), groups);
         std::vector<Vec4f> expected;
-        lsda::mergeGroups(input, groups, mergeParamsOf(d), expected);
+        lsda::mergeGroups(input, groups, d.getParams(), expected);
         EXPECT_LT(expected.size(), input.size());  // something fused
         EXPECT_TRUE(bitIdentical(expected, o.merged));
     });
@@ -181,9 +177,10 @@ TEST(LSDAdvance_StageOutputs, merged_segments_are_mergeGroups_of_the_stage2_inpu
 
 TEST(LSDAdvance_StageOutputs, the_last_stage_output_is_detect_lines)
 {
-    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat&, const std::vector<Vec4f>& lines) {
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat& frame, const std::vector<Vec4f>& lines) {
         const StageOutputs o = stageOutputsOf(d);
-        EXPECT_TRUE(bitIdentical(lines, d.getStageOrder() == LSDAdvance::FILTER_THEN_MERGE ? o.merged : o.filtered));
+        EXPECT_TRUE(bitIdentical(lines, clippedTo(d.getStageOrder() == LSDAdvance::FILTER_THEN_MERGE ? o.merged : o.filtered,
+                                                  frame.size())));
     });
 }
 
@@ -208,7 +205,7 @@ TEST(LSDAdvance_StageOutputs, stages_that_are_off_pass_their_input_on_and_give_n
     for (int order : { (int)LSDAdvance::FILTER_THEN_MERGE, (int)LSDAdvance::MERGE_THEN_FILTER })
     {
         SCOPED_TRACE(order);
-        Ptr<LSDAdvance> d = createLSDAdvance(LSDAdvance::LENGTH_FILTER_NONE);
+        Ptr<LSDAdvance> d = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE);
         d->setStageOrder(order);
         d->setMergeStrategy(LSDAdvance::MERGE_NONE);
         std::vector<Vec4f> lines;
@@ -217,7 +214,7 @@ TEST(LSDAdvance_StageOutputs, stages_that_are_off_pass_their_input_on_and_give_n
         ASSERT_GT(o.base.size(), 100u);
         EXPECT_TRUE(bitIdentical(o.base, o.filtered));
         EXPECT_TRUE(bitIdentical(o.base, o.merged));
-        EXPECT_TRUE(bitIdentical(o.base, lines));
+        EXPECT_TRUE(bitIdentical(clippedTo(o.base, img.size()), lines));
         EXPECT_TRUE(o.labels.empty());
 
         // Merging on again: labels come back, one per base segment with MERGE_THEN_FILTER.
@@ -287,6 +284,121 @@ TEST(LSDAdvance_StageOutputs, a_rejected_call_keeps_the_previous_outputs)
     EXPECT_TRUE(bitIdentical(before.filtered, after.filtered));
     EXPECT_TRUE(bitIdentical(before.merged, after.merged));
     EXPECT_EQ(before.labels, after.labels);
+}
+
+// The sources of each returned line, as std::vector<std::vector<int> >.
+std::vector<std::vector<int> > sourcesOf(const LSDAdvance& d)
+{
+    std::vector<std::vector<int> > sources;
+    d.getLastSources(sources);
+    return sources;
+}
+
+TEST(LSDAdvance_StageOutputs, sources_partition_the_base_segments_that_reach_the_output)
+{
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat& frame, const std::vector<Vec4f>& lines) {
+        const StageOutputs o = stageOutputsOf(d);
+        const std::vector<std::vector<int> > sources = sourcesOf(d);
+        ASSERT_EQ(lines.size(), sources.size());
+        std::vector<int> used(o.base.size(), 0);
+        size_t fused = 0;
+        for (size_t j = 0; j < sources.size(); j++)
+        {
+            ASSERT_FALSE(sources[j].empty()) << j;
+            EXPECT_TRUE(std::is_sorted(sources[j].begin(), sources[j].end()));
+            for (int i : sources[j])
+            {
+                ASSERT_GE(i, 0);
+                ASSERT_LT(i, (int)o.base.size());
+                used[i]++;
+            }
+            fused += sources[j].size() > 1;
+        }
+        EXPECT_EQ(0, std::count_if(used.begin(), used.end(), [](int n) { return n > 1; }));
+        EXPECT_GT(fused, 10u);
+        // A line made of one base segment is that segment (clipped when it reached past the image).
+        for (size_t j = 0; j < sources.size(); j++)
+            if (sources[j].size() == 1)
+            {
+                Vec4f clipped;
+                ASSERT_TRUE(lsda::clipToDomain(o.base[sources[j][0]], frame.size(), clipped));
+                EXPECT_EQ(clipped, lines[j]);
+            }
+    });
+}
+
+TEST(LSDAdvance_StageOutputs, sources_of_a_fused_edge_are_its_pieces)
+{
+    // Bright bars whose top edges are collinear pieces of one line: merging joins them into one
+    // line, made of exactly the base pieces along that line.
+    Mat img(240, 640, CV_8UC1, Scalar(40));
+    for (int x = 40; x < 580; x += 108)  // top edges 6 px apart, closer than endpointDistance
+        rectangle(img, Point(x, 100), Point(x + 103, 239), Scalar(200), FILLED);
+    for (int order : { (int)LSDAdvance::FILTER_THEN_MERGE, (int)LSDAdvance::MERGE_THEN_FILTER })
+    {
+        SCOPED_TRACE(order);
+        Ptr<LSDAdvance> d = createLSDAdvance();
+        d->setStageOrder(order);
+        std::vector<Vec4f> lines;
+        d->detect(img, lines);
+        const StageOutputs o = stageOutputsOf(*d);
+        const std::vector<std::vector<int> > sources = sourcesOf(*d);
+        const auto onTop = [](const Vec4f& s) { return std::abs(s[1] - 99.5f) < 1.5f && std::abs(s[3] - 99.5f) < 1.5f; };
+        std::vector<int> pieces;
+        for (size_t i = 0; i < o.base.size(); i++)
+            if (onTop(o.base[i]))
+                pieces.push_back((int)i);
+        ASSERT_GE(pieces.size(), 5u);
+        int topLines = 0;
+        for (size_t j = 0; j < lines.size(); j++)
+            if (onTop(lines[j]) && lsda::segmentLength(lines[j]) > 400)
+            {
+                topLines++;
+                EXPECT_EQ(pieces, sources[j]);
+            }
+        EXPECT_EQ(1, topLines);
+    }
+}
+
+TEST(LSDAdvance_StageOutputs, sources_are_each_segment_itself_when_no_stage_runs)
+{
+    std::vector<Vec4f> segments = { Vec4f(0, 0, 50, 0), Vec4f(0, 10, 0, 60), Vec4f(100, 100, 140, 130) };
+    Ptr<LSDAdvance> d = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE);
+    d->setMergeStrategy(LSDAdvance::MERGE_NONE);
+    std::vector<Vec4f> lines;
+    d->processSegments(segments, lines);
+    const std::vector<std::vector<int> > expected = { { 0 }, { 1 }, { 2 } };
+    EXPECT_EQ(expected, sourcesOf(*d));
+    // Clipped away: the third segment lies outside a 90 x 90 image.
+    d->processSegments(segments, lines, Size(90, 90));
+    const std::vector<std::vector<int> > inside = { { 0 }, { 1 } };
+    EXPECT_EQ(inside, sourcesOf(*d));
+    EXPECT_EQ(2u, lines.size());
+    EXPECT_TRUE(sourcesOf(*createLSDAdvance()).empty());
+}
+
+TEST(LSDAdvance_StageOutputs, drawSegments_draws_like_LineSegmentDetector)
+{
+    const Mat& img = buildingImage();
+    Ptr<LSDAdvance> d = createLSDAdvance();
+    std::vector<Vec4f> lines;
+    d->detect(img, lines);
+    Mat ours = img.clone(), lsds = img.clone();
+    d->drawSegments(ours, lines);
+    createLineSegmentDetector()->drawSegments(lsds, lines);
+    ASSERT_EQ(CV_8UC3, ours.type());
+    EXPECT_EQ(0, cvtest::norm(ours, lsds, NORM_INF));
+    Mat colour;
+    cvtColor(img, colour, COLOR_GRAY2BGR);
+    d->drawSegments(colour, lines);
+    EXPECT_EQ(0, cvtest::norm(colour, lsds, NORM_INF));
+    for (const Mat& bad : { Mat(), Mat(10, 10, CV_8UC2), Mat(10, 10, CV_32FC1), Mat(10, 10, CV_8UC4) })
+    {
+        Mat image = bad.clone();
+        EXPECT_THROW(d->drawSegments(image, lines), cv::Exception) << typeToString(bad.type());
+    }
+    Mat image = img.clone();
+    EXPECT_THROW(d->drawSegments(image, Mat(3, 4, CV_32FC1)), cv::Exception);
 }
 
 }} // namespace

@@ -30,6 +30,7 @@ elif BACKEND == "standalone":
     import lsd_advance as api
 else:
     raise RuntimeError("LSD_ADVANCE_PY_BACKEND must be 'standalone' or 'cv2', not %r" % BACKEND)
+evaluation = api.line_evaluation
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 HEADER = os.path.join(REPO, "include", "opencv2", "lsd_advance", "lsd_advance.hpp")
@@ -71,17 +72,33 @@ def as_lines(lines):
     return np.zeros((0, 1, 4), np.float32) if lines is None else lines
 
 
+def saved_text(detector):
+    """What detector.save() writes."""
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "params.yml")
+        detector.save(path)
+        with open(path) as f:
+            return f.read()
+
+
 def saved_parameters(detector):
-    """{name: value} of the parameters detector.save() writes."""
+    """The names of LSDAdvance's own parameters detector.save() writes (the base detectors' are in maps)."""
     with tempfile.TemporaryDirectory() as folder:
         path = os.path.join(folder, "params.yml")
         detector.save(path)
         fs = cv2.FileStorage(path, cv2.FILE_STORAGE_READ)
         node = fs.getNode(detector.getDefaultName())
-        return {k: node.getNode(k).real() for k in node.keys() if k not in NOT_PARAMETERS}
+        return [k for k in node.keys() if k not in NOT_PARAMETERS and not node.getNode(k).isMap()]
 
 
 PARAMETERS = sorted(saved_parameters(api.createLSDAdvance()))
+# The fields of the base detectors' structs, as the getters of the structs return them.
+BASE_STRUCTS = {"LSDParams": api.LSDAdvance_BASE_LSD, "FLDParams": api.LSDAdvance_BASE_FLD,
+                "EDLinesParams": api.LSDAdvance_BASE_EDLINES}
+
+
+def fields(struct):
+    return sorted(a for a in dir(struct) if not a.startswith("_"))
 
 
 def getter(detector, name):
@@ -116,17 +133,7 @@ def other_values(detector, name):
 
 # Parameters that act only in another configuration: what to set first (on both detectors).
 def set_up_for(detector, name):
-    if name.startswith("fld"):
-        detector.setBaseDetector(api.LSDAdvance_BASE_FLD)
-    elif name.startswith("ed"):
-        detector.setBaseDetector(api.LSDAdvance_BASE_EDLINES)
-    elif name == "lsdSigmaScale":
-        detector.setLsdScale(0.8)  # the Gaussian is used only when the scale is below 1
-    elif name == "lsdLogEps":
-        detector.setLsdRefine(cv2.LSD_REFINE_ADV)
-    elif name == "lsdDensityThreshold":
-        detector.setLsdRefine(cv2.LSD_REFINE_STD)
-    elif name == "baselineRatio":
+    if name == "baselineRatio":
         detector.setMergeStrategy(api.LSDAdvance_MERGE_BASELINES)
 
 
@@ -172,34 +179,15 @@ def test_detect_equals_the_cpp_sample_output(building, tmp_path):
 def test_detect_equals_processSegments_of_opencv_lsd(building):
     detector = api.createLSDAdvance()
     detector.setBaseDetector(api.LSDAdvance_BASE_LSD)
-    # processSegments has no image, so no responses: stage 1 keeps long segments only.
-    detector.setKeepStrongSegments(False)
-    lsd = cv2.createLineSegmentDetector(detector.getLsdRefine(), detector.getLsdScale(), detector.getLsdSigmaScale(),
-                                        detector.getLsdQuant(), detector.getLsdAngleTolerance(), detector.getLsdLogEps(),
-                                        detector.getLsdDensityThreshold(), detector.getLsdNumBins())
+    p = detector.getLSDParams()
+    lsd = cv2.createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance, p.logEps,
+                                        p.densityThreshold, p.numBins)
     base = lsd.detect(building)[0]
     lines = detector.detect(building)
     assert detector.getLastStats().baseSegments == len(base)
-    detector.reset()
-    assert np.array_equal(detector.processSegments(base), lines)
-
-
-def test_computeLineResponses_match_detectKeyLines_and_rank_contrast(building):
-    detector = api.createLSDAdvance()
-    lines = detector.detect(building)
-    responses = api.computeLineResponses(building, lines)
-    assert responses.shape == (len(lines), 1) and responses.dtype == np.float32
-    if hasattr(api, "linesToKeyLines"):
-        keylines = detector.detectKeyLines(building)
-        assert [k.response for k in keylines] == list(responses.ravel())
-    # A step of 150 gray levels under a 120 px segment pointing up (bright side on its left).
-    step = np.full((200, 300), 50, np.uint8)
-    step[:, :150] = 200
-    up = np.array([[[149.5, 160, 149.5, 40]]], np.float32)
-    assert api.computeLineResponses(step, up)[0, 0] == pytest.approx(120 / 300 * (150 / 255) ** 2, rel=1e-5)
-    assert api.computeLineResponses(step, up[:, :, [2, 3, 0, 1]])[0, 0] == 0
-    with pytest.raises(cv2.error):
-        api.computeLineResponses(np.zeros((0, 0), np.uint8), up)
+    size = (building.shape[1], building.shape[0])
+    assert np.array_equal(detector.processSegments(base, None, size), lines)
+    assert np.array_equal(detector.processSegments(base, imageSize=size), lines)
 
 
 def test_gray_bgr_and_bgra_input_agree(building):
@@ -320,31 +308,107 @@ def header_constants():
 def test_every_cpp_method_of_the_header_is_exposed():
     detector = api.createLSDAdvance()
     methods = header_methods()
-    assert len(methods) > 40
+    assert len(methods) > 40 and "drawSegments" in methods and "getLastSources" in methods
     missing = [m for m in methods if not hasattr(detector, m)]
     assert missing == []
 
 
 def test_every_enum_constant_is_exposed_with_its_cpp_value():
     constants = header_constants()
-    assert "LSDAdvance_LENGTH_FILTER_INTERFRAME" in constants
+    assert "LSDAdvance_LENGTH_FILTER_INTERFRAME" in constants and "LSDAdvance_PRESET_PAPER" in constants
     assert {n: getattr(api, n, None) for n in constants} == constants
 
 
 def test_every_saved_parameter_has_a_getter_and_a_setter():
     detector = api.createLSDAdvance()
-    assert len(PARAMETERS) > 30
+    assert PARAMETERS == fields(api.LSDAdvance.Params())
     for name in PARAMETERS:
         assert callable(getter(detector, name)), name
         assert callable(setter(detector, name)), name
 
 
-def test_createLSDAdvance_keywords_set_their_parameters():
-    detector = api.createLSDAdvance(lengthFilterMode=api.LSDAdvance_LENGTH_FILTER_NONE, endpointDistance=4.5,
-                                    mergeThreshold=0.25)
+def test_createLSDAdvance_takes_a_preset():
+    assert api.createLSDAdvance(api.LSDAdvance_PRESET_FASTEST).getBaseDetector() == api.LSDAdvance_BASE_EDLINES
+    paper = api.createLSDAdvance(preset=api.LSDAdvance_PRESET_PAPER)
+    assert paper.getLSDParams().refine == cv2.LSD_REFINE_STD and paper.getLSDParams().scale == 0.8
+    assert paper.getMergeStrategy() == api.LSDAdvance_MERGE_BASELINES
+    assert api.createLSDAdvance(api.LSDAdvance_PRESET_SEQUENCE).getLengthFilterMode() == \
+        api.LSDAdvance_LENGTH_FILTER_COUNT_TRACKING
+    assert api.createLSDAdvance().getLengthFilterMode() == api.LSDAdvance_LENGTH_FILTER_ADAPTIVE
+    with pytest.raises(cv2.error, match="PRESET_MOST_ACCURATE"):
+        api.createLSDAdvance(7)
+
+
+def header_params_defaults():
+    """{struct: {field: documented default}} of the parameter structs of the header."""
+    with open(HEADER) as f:
+        text = f.read()
+    defaults = {}
+    for struct, body in re.findall(r"\n    struct CV_EXPORTS_W_SIMPLE (\w+)\s*\{(.*?)\n    \};", text, re.S):
+        defaults[struct] = dict(re.findall(r"CV_PROP_RW \w+ (\w+);\s*//!<.*Default ([\w.]+)\.", body))
+    return defaults
+
+
+def documented(value):
+    """A default as the header writes it: a number, true/false, or an enum constant's name."""
+    if value in ("true", "false"):
+        return value == "true"
+    if re.match(r"^-?[0-9.]+$", value):
+        return float(value)
+    return getattr(api, "LSDAdvance_" + value, None) if hasattr(api, "LSDAdvance_" + value) else getattr(cv2, value)
+
+
+def test_params_structs_have_the_documented_defaults():
+    defaults = header_params_defaults()
+    structs = {"Params": api.LSDAdvance.Params(), "LSDParams": api.LSDAdvance.LSDParams(),
+               "FLDParams": api.LSDAdvance.FLDParams()}
+    assert sorted(defaults) == sorted(structs)
+    for name, struct in structs.items():
+        assert sorted(defaults[name]) == fields(struct), name
+        for field, value in defaults[name].items():
+            assert getattr(struct, field) == documented(value), (name, field)
+    detector = api.createLSDAdvance()
+    for name in PARAMETERS:
+        assert getter(detector, name)() == getattr(structs["Params"], name), name
+
+
+def test_params_round_trip_and_a_bad_field_changes_nothing():
+    detector = api.createLSDAdvance()
+    params = detector.getParams()
+    params.mergeThreshold = 0.75
+    params.lengthFilterMode = api.LSDAdvance_LENGTH_FILTER_NONE
+    detector.setParams(params)
+    assert detector.getMergeThreshold() == 0.75
     assert detector.getLengthFilterMode() == api.LSDAdvance_LENGTH_FILTER_NONE
-    assert detector.getEndpointDistance() == 4.5
-    assert detector.getMergeThreshold() == 0.25
+    params.endpointDistance = 3.0
+    params.proximityRatio = -1.0
+    with pytest.raises(cv2.error, match="proximityRatio"):
+        detector.setParams(params)
+    assert detector.getEndpointDistance() == 10.0
+
+
+@pytest.mark.parametrize("struct", sorted(BASE_STRUCTS))
+def test_base_struct_round_trips_and_a_bad_field_changes_nothing(struct):
+    detector = api.createLSDAdvance()
+    get, set_ = getattr(detector, "get" + struct), getattr(detector, "set" + struct)
+    params = get()
+    for name in fields(params):
+        value = getattr(params, name)
+        if isinstance(value, bool):
+            setattr(params, name, not value)
+        elif isinstance(value, float):
+            setattr(params, name, value * 0.9)
+        elif name not in ("refine", "EdgeDetectionOperator", "cannyApertureSize"):
+            setattr(params, name, value + 2 if value > 0 else 20)
+    set_(params)
+    got = get()
+    assert {n: getattr(got, n) for n in fields(got)} == pytest.approx({n: getattr(params, n) for n in fields(params)})
+    bad = get()
+    name = [n for n in fields(bad) if isinstance(getattr(bad, n), float)][0]
+    setattr(bad, name, -5.0)
+    with pytest.raises(cv2.error, match=name):
+        set_(bad)
+    assert {n: getattr(get(), n) for n in fields(got)} == {n: getattr(got, n) for n in fields(got)}
 
 
 @pytest.mark.parametrize("name", PARAMETERS)
@@ -377,6 +441,9 @@ def test_save_and_read_round_trip_every_parameter(tmp_path):
     configured = api.createLSDAdvance()
     for name in PARAMETERS:
         setter(configured, name)(other_values(configured, name)[0])
+    lsd = configured.getLSDParams()
+    lsd.quant = 3.0
+    configured.setLSDParams(lsd)
     path = str(tmp_path / "params.yml")
     configured.save(path)
     loaded = api.createLSDAdvance()
@@ -384,12 +451,45 @@ def test_save_and_read_round_trip_every_parameter(tmp_path):
     loaded.read(fs.getNode(loaded.getDefaultName()))
     for name in PARAMETERS:
         assert getter(loaded, name)() == getter(configured, name)(), name
+    assert loaded.getLSDParams().quant == 3.0
+
+
+def test_saved_modes_are_names_and_read_takes_names_or_numbers(tmp_path):
+    text = saved_text(api.createLSDAdvance(api.LSDAdvance_PRESET_PAPER))
+    for line in ("lengthFilterMode: LENGTH_FILTER_INTERFRAME", "mergeStrategy: MERGE_BASELINES",
+                 "refine: LSD_REFINE_STD", "EdgeDetectionOperator: PREWITT"):
+        assert line in text
+    path = str(tmp_path / "modes.yml")
+    with open(path, "w") as f:
+        f.write("%YAML:1.0\n---\nLSDAdvance:\n   stageOrder: FILTER_THEN_MERGE\n   mergeStrategy: 0\n")
+    detector = api.createLSDAdvance()
+    fs = cv2.FileStorage(path, cv2.FILE_STORAGE_READ)
+    detector.read(fs.getNode("LSDAdvance"))
+    assert detector.getStageOrder() == api.LSDAdvance_FILTER_THEN_MERGE
+    assert detector.getMergeStrategy() == api.LSDAdvance_MERGE_NONE
+
+
+def test_read_warns_about_an_unknown_key_naming_the_closest(tmp_path, capfd):
+    path = str(tmp_path / "typo.yml")
+    with open(path, "w") as f:
+        f.write("%YAML:1.0\n---\nLSDAdvance:\n   mergeTreshold: 0.9\n   endpointDistance: 4\n")
+    detector = api.createLSDAdvance()
+    fs = cv2.FileStorage(path, cv2.FILE_STORAGE_READ)
+    capfd.readouterr()
+    detector.read(fs.getNode("LSDAdvance"))
+    err = capfd.readouterr().err
+    assert "unknown key 'mergeTreshold' ignored; the closest known key is 'mergeThreshold'" in err
+    assert detector.getEndpointDistance() == 4.0 and detector.getMergeThreshold() == 0.6
 
 
 def test_write_into_cv2_filestorage_and_read_back(tmp_path):
     configured = api.createLSDAdvance()
-    configured.setLsdScale(0.5)
-    configured.setFldDoMerge(True)
+    lsd = configured.getLSDParams()
+    lsd.scale = 0.5
+    configured.setLSDParams(lsd)
+    fld = configured.getFLDParams()
+    fld.doMerge = True
+    configured.setFLDParams(fld)
     path = str(tmp_path / "params.json")
     fs = cv2.FileStorage(path, cv2.FILE_STORAGE_WRITE)
     configured.write(fs, "detector")
@@ -397,19 +497,19 @@ def test_write_into_cv2_filestorage_and_read_back(tmp_path):
     loaded = api.createLSDAdvance()
     fs = cv2.FileStorage(path, cv2.FILE_STORAGE_READ)  # alive while its nodes are used
     loaded.read(fs.getNode("detector"))
-    assert loaded.getLsdScale() == 0.5
-    assert loaded.getFldDoMerge() is True
+    assert loaded.getLSDParams().scale == 0.5
+    assert loaded.getFLDParams().doMerge is True
 
 
 def test_read_of_a_bad_value_raises_and_changes_nothing(tmp_path):
     path = str(tmp_path / "bad.yml")
     with open(path, "w") as f:
-        f.write("%YAML:1.0\n---\nLSDAdvance:\n   lsdScale: 0.5\n   endpointDistance: -3\n")
+        f.write("%YAML:1.0\n---\nLSDAdvance:\n   lsd: { scale: 0.5 }\n   endpointDistance: -3\n")
     detector = api.createLSDAdvance()
     with pytest.raises(cv2.error, match="endpointDistance"):
         fs = cv2.FileStorage(path, cv2.FILE_STORAGE_READ)
         detector.read(fs.getNode("LSDAdvance"))
-    assert detector.getLsdScale() == 1.0
+    assert detector.getLSDParams().scale == 1.0
 
 
 # --------------------------------------------------------------------------------------------
@@ -436,6 +536,7 @@ def random_segments(count, seed):
 
 def test_sequence_alpha_follows_the_kept_counts_and_reset_restarts_it():
     detector = api.createLSDAdvance()
+    detector.setLengthFilterMode(api.LSDAdvance_LENGTH_FILTER_INTERFRAME)
     frames = [random_segments(400, 1), random_segments(200, 2), random_segments(300, 3)]
     kept = []
     for segments in frames[:2]:
@@ -461,8 +562,50 @@ def test_getLastStageOutputs_final_stage_equals_detect(small_building):
     assert base.shape == (stats.baseSegments, 1, 4) and base.dtype == np.float32
     assert labels.shape == (stats.baseSegments, 1) and labels.dtype == np.int32
     assert merged.shape == (stats.mergedSegments, 1, 4)
-    # MERGE_THEN_FILTER (default): the length filter runs last.
-    assert np.array_equal(filtered, lines)
+    # MERGE_THEN_FILTER (default): the length filter runs last, then the clipping to the image.
+    size = (small_building.shape[1], small_building.shape[0])
+    unstaged = api.createLSDAdvance()
+    unstaged.setLengthFilterMode(api.LSDAdvance_LENGTH_FILTER_NONE)
+    unstaged.setMergeStrategy(api.LSDAdvance_MERGE_NONE)
+    assert np.array_equal(unstaged.processSegments(filtered, None, size), lines)
+
+
+def test_lines_lie_inside_the_image(building):
+    lines = api.createLSDAdvance().detect(building).reshape(-1, 4)
+    height, width = building.shape
+    assert lines[:, 0::2].min() >= -0.5 and lines[:, 0::2].max() <= width - 0.5
+    assert lines[:, 1::2].min() >= -0.5 and lines[:, 1::2].max() <= height - 0.5
+
+
+def test_getLastSources_gives_the_base_segments_of_each_line(small_building):
+    detector = api.createLSDAdvance()
+    lines = detector.detect(small_building)
+    base = detector.getLastStageOutputs()[0]
+    sources = detector.getLastSources()
+    assert len(sources) == len(lines)
+    indices = np.concatenate([s.ravel() for s in sources])
+    assert indices.dtype == np.int32 and len(np.unique(indices)) == len(indices)
+    assert indices.min() >= 0 and indices.max() < len(base)
+    assert any(len(s) > 1 for s in sources)
+
+
+def test_drawSegments_draws_as_LineSegmentDetector_does(small_building):
+    detector = api.createLSDAdvance()
+    lines = detector.detect(small_building)
+    expected = cv2.createLineSegmentDetector().drawSegments(small_building.copy(), lines)
+    drawn = detector.drawSegments(small_building.copy(), lines)
+    assert drawn.shape == small_building.shape + (3,)
+    assert np.array_equal(drawn, expected)
+    with pytest.raises(cv2.error, match="CV_8UC1 or CV_8UC3"):
+        detector.drawSegments(np.zeros((8, 8), np.float32), lines)
+
+
+def test_the_default_detector_is_stateless(building):
+    detector = api.createLSDAdvance()
+    fresh = detector.detect(building)
+    for name in ("graf1.png", "graf3.png"):
+        detector.detect(read_gray(name))
+    assert np.array_equal(detector.detect(building), fresh)
 
 
 # --------------------------------------------------------------------------------------------
@@ -538,7 +681,7 @@ def test_lbd_matching_of_graf1_graf3_equals_the_cpp_sample():
     described = [matching.describe_lines(g, l) for g, l in zip(grays, lines)]
     assert all(d.shape == (len(k), 32) and d.dtype == np.uint8 for k, d in described)
     matches = matching.match_lines(described[0][1], described[1][1])
-    score = api.evaluateHomographyMatches(lines[0], lines[1], matches, api.readHomography(paths[2]),
-                                          grays[0].shape[::-1], grays[1].shape[::-1])
+    score = evaluation.evaluateHomographyMatches(lines[0], lines[1], matches, evaluation.readHomography(paths[2]),
+                                                 grays[0].shape[::-1], grays[1].shape[::-1])
     assert (len(matches), score.correct) == (expected_matches, expected_correct)
     assert score.correct > 0

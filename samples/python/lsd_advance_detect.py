@@ -5,8 +5,8 @@
 """Detects line segments in an image, each image of a folder or each frame of a video, the
 Python counterpart of samples/lsd_advance_detect.cpp: optionally writes them (<stem>.txt,
 x1 y1 x2 y2 per row) and drawn on the image (<stem>.png), draws what each stage of LSDAdvance
-did (--draw=filter,groups,merge, from getLastStageOutputs()), and prints segments per image,
-the share of long segments and the time of the detection.
+did (--draw=filter,groups,merge, from getLastStageOutputs() and getLastSources()), and prints
+segments per image, the share of long segments and the time of the detection.
 
     python3 lsd_advance_detect.py --input=building.jpg --output=out --draw
 
@@ -188,7 +188,7 @@ class FrameSource:
         path = cv2.samples.findFile(source, False, True) or source
         self.paths = []
         if os.path.isdir(path):
-            self.paths = list(lsda.loadSequence(path).imagePaths)  # name order; raises when there is none
+            self.paths = list(lsda.line_evaluation.loadSequence(path).imagePaths)  # name order; raises when there is none
         elif os.path.isfile(path) and cv2.haveImageReader(path):
             self.paths = [path]
             self.single_image = True
@@ -388,11 +388,14 @@ def _segments(array):
 
 
 class Stages:
-    """The outputs of the stages of the last detect() and how they were run."""
+    """The outputs of the stages of the last detect(), the lines it returned with the base segments
+    each was made from, and how the stages were run."""
 
-    def __init__(self, detector):
+    def __init__(self, detector, lines):
         base, filtered, labels, merged = detector.getLastStageOutputs()
         self.base, self.filtered, self.merged = _segments(base), _segments(filtered), _segments(merged)
+        self.lines = _segments(lines)
+        self.sources = [[int(i) for i in s.reshape(-1)] for s in detector.getLastSources()]
         self.labels = [] if labels is None else [int(v) for v in labels.reshape(-1)]
         self.stats = detector.getLastStats()
         self.filter_first = detector.getStageOrder() == lsda.LSDAdvance_FILTER_THEN_MERGE
@@ -450,34 +453,35 @@ def draw_groups(canvas, st):
 
 
 def draw_merge(canvas, st):
-    """(c) Stage 3: every fused segment as a wide band with the pieces it was made of drawn thin
-    on top in alternating colours; segments that merging left as they were in grey."""
+    """(c) Stage 3: every returned line fused from several base segments (getLastSources()) as a
+    wide band with those pieces drawn thin on top in alternating colours; lines of one segment in
+    grey."""
     w = canvas.stroke
-    inputs = st.grouping_input()
-    input_keys, output_keys = set(inputs), set(st.merged)
     fused = pieces = unchanged = 0
-    for s in st.merged:
-        if s in input_keys:
-            canvas.segment(s, GREY, w)
+    for line, sources in zip(st.lines, st.sources):
+        if len(sources) == 1:
+            canvas.segment(line, GREY, w)
             unchanged += 1
     bands = canvas.image.copy()
-    for s in st.merged:
-        if s not in input_keys:
-            canvas.segment(s, FUSED, 4 * w + 3, bands)
+    for line, sources in zip(st.lines, st.sources):
+        if len(sources) > 1:
+            canvas.segment(line, FUSED, 4 * w + 3, bands)
             fused += 1
     canvas.image = cv2.addWeighted(bands, 0.6, canvas.image, 0.4, 0)
-    for s in inputs:
-        if s not in output_keys:
-            colour = PIECE_B if pieces % 2 else PIECE_A
-            canvas.segment(s, colour, w)
-            canvas.endpoints(s, colour)
-            pieces += 1
-    title = "Stage 3, merging: %d segments in, %d out%s%s" % (
-        len(inputs), len(st.merged), "" if st.merge_on else " - merging off", canvas.shown_part())
+    for sources in st.sources:
+        if len(sources) > 1:
+            for i in sources:
+                colour = PIECE_B if pieces % 2 else PIECE_A
+                canvas.segment(st.base[i], colour, w)
+                canvas.endpoints(st.base[i], colour)
+                pieces += 1
+    title = "Stage 3, merging: %d segments in, %d out, %d returned%s%s" % (
+        len(st.grouping_input()), len(st.merged), len(st.lines), "" if st.merge_on else " - merging off",
+        canvas.shown_part())
     return with_caption(canvas.image, title, [
-        (FUSED, "fused segments: %d" % fused),
-        (PIECE_A, "pieces they were fused from (orange and pink in turn): %d" % pieces),
-        (GREY, "unchanged: %d" % unchanged)])
+        (FUSED, "fused lines: %d" % fused),
+        (PIECE_A, "base segments they were fused from (orange and pink in turn): %d" % pieces),
+        (GREY, "lines of one segment: %d" % unchanged)])
 
 
 def write_image(path, image):
@@ -528,7 +532,7 @@ def main():
     source = FrameSource(args.input, "detect")
     if args.output:
         os.makedirs(args.output, exist_ok=True)
-    drawer = cv2.createLineSegmentDetector()
+    drawer = lsda.createLSDAdvance()
     segments, long_segments, ms = 0, 0.0, []
     method.reset()
     for gray, stem in source:
@@ -543,16 +547,14 @@ def main():
             lines = np.zeros((0, 1, 4), np.float32)
         ms.append(tm.getTimeMilli())
         segments += len(lines)
-        long_segments += lsda.longSegmentShare(lines, args.long) * len(lines)
+        long_segments += lsda.line_evaluation.longSegmentShare(lines, args.long) * len(lines)
         if args.output and not args.no_segments:
-            lsda.writeSegments(os.path.join(args.output, stem + ".txt"), lines)
+            lsda.line_evaluation.writeSegments(os.path.join(args.output, stem + ".txt"), lines)
         if "lines" in draw:
-            canvas = cv2.cvtColor(gray, cv2.COLOR_GRAY2BGR)
-            if len(lines):
-                canvas = drawer.drawSegments(canvas, lines)
+            canvas = drawer.drawSegments(gray.copy(), lines)
             write_image(os.path.join(args.output, stem + "." + args.ext), canvas)
         if draw - {"lines"}:
-            stages = Stages(method.lsd_advance)
+            stages = Stages(method.lsd_advance, lines)
             canvas = StageCanvas(gray, zoom_region(zoom, (gray.shape[1], gray.shape[0])))
             for kind, drawing in (("filter", draw_filter), ("groups", draw_groups), ("merge", draw_merge)):
                 if kind in draw:

@@ -55,7 +55,7 @@ RIGHT, WRONG = (60, 200, 60), (60, 60, 255)
 def classes_under_homography(lines1, lines2, matches, H):
     """[(name, colour, mask)] of the correct (green) and wrong (red) matches under the homography
     H, as evaluateHomographyMatches counts them."""
-    correct = np.array([lsda.correspondUnderHomography(lines1[m.queryIdx].reshape(4), lines2[m.trainIdx].reshape(4), H)
+    correct = np.array([lsda.line_evaluation.correspondUnderHomography(lines1[m.queryIdx].reshape(4), lines2[m.trainIdx].reshape(4), H)
                         for m in matches], bool)
     return [("correct", RIGHT, correct.astype(np.int8)), ("wrong", WRONG, (~correct).astype(np.int8))]
 
@@ -122,7 +122,7 @@ def main():
         raise ValueError("--draw=%s: no image format for this file name (use .jpg or .png)" % args.draw)
 
     method = make_method(args.method, args.params)
-    H = lsda.readHomography(find(args.homography)) if args.homography else None
+    H = lsda.line_evaluation.readHomography(find(args.homography)) if args.homography else None
     gray1, gray2 = read_gray_image(find(args.image1)), read_gray_image(find(args.image2))
     if gray1 is None or gray2 is None:
         raise RuntimeError("cannot read %s as an image" % (args.image2 if gray1 is not None else args.image1))
@@ -139,7 +139,7 @@ def main():
     print("segments:        %d / %d" % (0 if lines1 is None else len(lines1), 0 if lines2 is None else len(lines2)))
     print("matches:         %d" % len(matches))
     if H is not None:
-        s = lsda.evaluateHomographyMatches(lines1, lines2, matches, H, (gray1.shape[1], gray1.shape[0]),
+        s = lsda.line_evaluation.evaluateHomographyMatches(lines1, lines2, matches, H, (gray1.shape[1], gray1.shape[0]),
                                            (gray2.shape[1], gray2.shape[0]))
         print("correct:         %d (precision %.3f; mapped within 3 px, overlapping)" % (s.correct, s.precision))
         print("repeatability:   %.3f (%d of %d visible segments)" % (s.repeatability, s.repeated, s.visible))

@@ -9,6 +9,18 @@
 
 namespace cv {
 namespace ximgproc {
+/** @brief The evaluation behind LSDAdvance's documented results: the structural precision/recall
+protocol, line matching under a homography and between posed frames, and the loaders of the data
+sets they run on (YorkUrban-LineSegment, KITTI-style sequences, HPatches-style folders).
+
+Python: cv2.ximgproc.line_evaluation (in-tree) and lsd_advance.line_evaluation (standalone).
+contrib's datasets module is not used: it reads none of these layouts (its SLAM_kitti wants
+KITTI's whole odometry tree, sequences/NN/image_0 with poses/NN.txt apart, where a sequence
+folder here holds image_l/, calib.txt and poses.txt; its IR_affine wants the Oxford naming
+img1.ppm and H1to2p, not HPatches' 1.ppm and H_1_2; it has no YorkUrban reader), and its
+loaders have no Python bindings.
+*/
+namespace line_evaluation {
 
 //! @addtogroup lsd_advance
 //! @{
@@ -274,6 +286,6 @@ CV_EXPORTS_W std::vector<HomographyPair> loadHomographyPairs(const String& folde
 
 //! @} lsd_advance
 
-}} // namespace cv::ximgproc
+}}} // namespace cv::ximgproc::line_evaluation
 
 #endif

@@ -6,7 +6,7 @@
 #define OPENCV_LSD_ADVANCE_LSD_ADVANCE_HPP
 
 #include "opencv2/core.hpp"
-#include "opencv2/imgproc.hpp"  // cv::LineSegmentDetectorModes for setLsdRefine
+#include "opencv2/ximgproc/edge_drawing.hpp"  // EdgeDrawing::Params: the parameters of BASE_EDLINES
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
 #include "opencv2/line_descriptor.hpp"
 #endif
@@ -17,11 +17,8 @@ namespace ximgproc {
 //! @addtogroup lsd_advance
 //! @{
 
-/** @brief Statistics of the last LSDAdvance::detect or LSDAdvance::processSegments call.
-
-Counts are numbers of segments after each stage; times are wall-clock milliseconds of each stage
-(stage 0 includes the conversion of a colour input to gray; it is 0 after processSegments).
-*/
+/** @brief Statistics of the last LSDAdvance::detect or LSDAdvance::processSegments call: segments
+after each stage, and wall-clock times (stage 0's includes the conversion to gray). */
 struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
 {
     LSDAdvanceStats()
@@ -33,9 +30,9 @@ struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
     CV_PROP_RW int mergedSegments;   //!< segments after merging (stage 3)
     CV_PROP_RW int filteredSegments; //!< segments that survived the length filter (stage 1)
     CV_PROP_RW int mergeGroups;      //!< endpoint groups holding two or more segments (stage 2)
-    CV_PROP_RW int outputSegments;   //!< segments returned
+    CV_PROP_RW int outputSegments;   //!< segments returned (after clipping to the image)
     CV_PROP_RW double minLength;     //!< length threshold of stage 1, in pixels (0 when the filter is off)
-    CV_PROP_RW double minResponse;   //!< response threshold of stage 1's strong segments (0 when none are kept for their response)
+    CV_PROP_RW double minResponse;   //!< response threshold of stage 1's strong segments (0 unless Params::keepStrongSegments acts)
     CV_PROP_RW double alpha;         //!< inter-frame factor used by stage 1, in [0.8, 1.2] (1 when the filter is off)
     CV_PROP_RW double baseMs;        //!< time of stage 0, ms
     CV_PROP_RW double filterMs;      //!< time of stage 1, ms
@@ -43,671 +40,280 @@ struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
     CV_PROP_RW double mergingMs;     //!< time of stage 3, ms
 };
 
-/** @example samples/lsd_advance_demo.cpp
-An example comparing LSDAdvance with OpenCV's LineSegmentDetector on building.jpg.
-*/
-
 /** @brief Line segment detector that returns fewer, longer segments than LSD (@cite Guan2026).
 
-The segments of OpenCV's LineSegmentDetector (@cite Rafael12), or of FastLineDetector
-(@cite Lee14) or EDLines (@cite akinlar2011edlines) (see BaseDetector), are post-processed in
-three stages:
-1. **Adaptive length suppression**: with @f$\mu@f$ and @f$\sigma@f$ the mean and population
-   standard deviation of the segment lengths of the frame, segments shorter than
-   @f$L_{min} = \alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$ (the paper's rule; by default
-   @f$\alpha \min(\mu, \sigma)@f$, see LengthThresholdRule; both times getLengthThresholdScale) are
-   dropped, unless they are strong (getKeepStrongSegments): their response (computeLineResponses)
-   reaches the same rule applied to the responses of the frame's segments. @f$\alpha@f$ is 1 for a
-   single image; in a sequence it follows the change of the count of kept segments over the two
-   previous frames (see LENGTH_FILTER_INTERFRAME).
-2. **Grouping**: segments are binned by undirected angle (getAngleBinWidth), and two segments
-   of the same (or, by default, a neighbouring) bin are connected when two of their endpoints
-   are closer than getEndpointDistance. Connected components are the merge groups.
-3. **Similarity-ordered merging**: in each group, a segment L is scored against a longer
-   segment B (with MERGE_BASELINES, the paper's rule, only against the baselines: the segments
-   at least getBaselineRatio times as long as the longest) with
-   @f$S = w_d S_d + w_p S_p + w_l S_l@f$ (direction: cosine of the angle between the directed segments, clipped at 0; proximity: @f$1 - D_{min}/D_{th}@f$ clipped at 0,
-   @f$D_{th}@f$ = getProximityRatio times the mean length of B and L; length:
-   @f$1 - |l_B - l_L| / \max(l_B, l_L)@f$) and fused into B, best scores first, when
-   @f$S \ge@f$ getMergeThreshold, @f$D_{min} < D_{th}@f$, and both of its endpoints lie within
-   getMaxPerpendicularOffset of B's line. The fused segment passes through the
-   length-weighted centre of B and L, along their length-weighted mean direction, and spans
-   the projections of all four endpoints.
+The segments of a base detector (BaseDetector: the LSD algorithm @cite Rafael12 by default,
+FastLineDetector @cite Lee14 or EDLines @cite akinlar2011edlines) pass three stages:
+1. **length filter**: segments shorter than a threshold computed from the mean and standard
+   deviation of the frame's segment lengths are dropped (LengthFilterMode, LengthThresholdRule),
+   unless strong (Params::keepStrongSegments);
+2. **grouping**: segments of the same (or a neighbouring) angle bin whose endpoints are close form
+   groups (AngleBinning);
+3. **merging**: in each group, pieces are fused into longer segments, best
+   direction/proximity/length score first, behind a perpendicular gate (MergeStrategy).
 
-@note The defaults are not the paper's configuration; each was chosen by measurement on half of
-YorkUrban-LineSegment and checked on the other half (doc/parameter_sweep.md): the base LSD reads
-the image at full scale without refinement (LSD_REFINE_NONE, scale 1; OpenCV's LSD uses
-LSD_REFINE_STD at scale 0.8 and is about 1.5 times faster), the length threshold is capped at
-the mean length (LENGTH_THRESHOLD_CAPPED: the paper's rule falls to 0 on frames with a few very
-long segments, which such a base detector often gives), merging runs before the length
-filter (MERGE_THEN_FILTER: the paper's order drops pieces that merging would join), every
-segment can absorb the shorter ones (MERGE_LONGEST_FIRST: the paper's baselines never join each
-other), and the proximity term uses 1.0 times the mean length instead of 0.1. The paper's
-configuration is LSD_REFINE_STD, scale 0.8, LENGTH_THRESHOLD_PAPER, FILTER_THEN_MERGE,
-MERGE_BASELINES and proximityRatio 0.1.
-
-@note Further differences from @cite Guan2026, each chosen to fix a gap of the paper: collinear pieces
-that straddle an angle-bin edge (9.9 vs 10.1 deg, 179.9 vs 0.1 deg) are paired across it
-(ANGLE_BINS_NEIGHBOURS); the centre of a fused segment drops the paper's extra factor 1/2; the
-mean direction is computed on unit vectors, never as a mean of angles across the 0/180 wrap;
-the merge threshold, the perpendicular-offset gate and the condition @f$D_{min} < D_{th}@f$ are
-additions (the paper gives none; the gate keeps two parallel edges 2 px apart from fusing, the
-distance condition keeps direction and length alone from joining pieces far apart); with MERGE_BASELINES, merging repeats
-over the group until no score reaches the threshold, each score being computed against the
-current (already grown) baseline, so that a chain of pieces joins a baseline piece by piece.
+Params lists every parameter with its unit, range and default; createLSDAdvance() takes a Preset.
+The formulas, where and why we differ from the paper, and the measurements behind the defaults
+are in doc/algorithm.md and doc/parameter_sweep.md.
 
 __Orientation.__ Like LSD, each segment (x1, y1, x2, y2) points from its start to its end so
-that, on the image as displayed (y pointing down), the brighter side is on its left and the
-darker side on its right. Fused segments keep the orientation of their baseline.
+that, on the image as displayed (y pointing down), the brighter side is on its left. Fused
+segments keep the orientation of the longer piece.
 
-__Coordinates.__ OpenCV's pixel-centre convention: pixel (i, j) is centred at (i, j).
+__Coordinates.__ Pixels; pixel (i, j) is centred at (i, j): the image covers [-0.5, W-0.5] x [-0.5, H-0.5].
 
-__Input.__ 8-bit images with 1 channel (gray), 3 channels (BGR) or 4 channels (BGRA, alpha
-ignored), of any size from 1 x 1 and any layout (ROI views, UMat); colour images are converted
-to gray. Images too small for a segment give none. Like OpenCV's LSD, other depths (8S, 16U,
-16S, 32S, 16F, 32F, 64F) and 2-channel images are rejected, not converted: scale them to 8 bits
-first (Mat::convertTo). An empty image or another type throws cv::Exception naming the type
-received and the accepted ones. A rejected call (image, segments, setter or read()) changes
-nothing: neither the parameters nor the sequence state.
+__Input.__ 8-bit images with 1 channel (gray), 3 (BGR) or 4 (BGRA, alpha ignored), of any size
+and layout (ROI views, UMat). Other types and empty images throw cv::Exception naming the type
+received and the accepted ones. A rejected call (image, segments, setter, read()) changes nothing.
 
-__Output.__ Coordinates are finite. Like LSD's, endpoints may lie outside the image: LSD
-extends a segment to the ends of its region's rectangle (measured: up to 8.5 px with the
-defaults on the 203 frames of the evaluation data, where merging never reached farther out).
+__Output.__ N x 1 CV_32FC4 (std::vector<cv::Vec4f>), finite, inside the image: a segment reaching
+past it is clipped along its own line, keeping its direction, and dropped when nothing is left.
 
-__Memory.__ The default base (LSD) needs about 32 bytes per pixel at lsdScale 1 (its copies of
-the image, gradient angles and norms, and its ordered pixel list) and 20 at scale 0.8: a
-10000 x 10000 image peaks at 3.2 GB resident (measured). Stages 1-3 need memory proportional
-to the number of segments. Memory does not grow over a sequence: 20,000 frames through one
-object keep resident memory flat after warm-up (test LSDAdvance_LongSequence).
+__State.__ By default detect() is stateless, like LSD. The inter-frame modes of LengthFilterMode
+(PRESET_SEQUENCE) make consecutive calls a sequence; reset() and every setter start a new one.
 
-__Threads.__ Separate instances may run on separate threads at once and give the results they
-give one after the other; results do not depend on cv::setNumThreads (bit-identical). One
-instance is NOT safe to use from two threads at once: it holds the sequence state (the kept
-counts of the previous frames), its base detector and reused buffers. Give each thread its own
-instance, or serialize the calls.
+__Threads.__ Separate instances may run on separate threads at once; results do not depend on
+cv::setNumThreads. One instance must not be used from two threads at once.
 
-__Parameters.__ Each has a getter and a setter. A setter throws cv::Exception, naming the
-parameter and its valid range, on a value that is out of range or not finite, and every setter
-resets the sequence (reset()). write() saves every parameter to a cv::FileStorage under its
-name (lowerCamelCase, e.g. `mergeThreshold`); read() restores them, keeping the current value of
-a missing key.
+__Parameters.__ Params (getParams(), setParams(), a getter/setter per field) and one struct per base
+(setLSDParams(), setFLDParams(), setEDLinesParams()). Setters throw cv::Exception naming the
+parameter and its range, and change nothing. write() saves them all (modes by name); read()
+takes names or numbers, keeps what a file lacks and warns about an unknown key.
 */
 class CV_EXPORTS_W LSDAdvance : public Algorithm
 {
 public:
-    /** @brief How stage 1 (adaptive length suppression) runs. */
+    /** @brief How stage 1 (the length filter) runs. */
     enum LengthFilterMode
     {
-        LENGTH_FILTER_NONE = 0,       //!< keep every base segment
-        LENGTH_FILTER_ADAPTIVE = 1,   //!< per-frame threshold with alpha = 1 (each call independent)
-        /** per-frame threshold scaled by the inter-frame factor (default). For frame k of a sequence,
-        with N the counts of segments kept by stage 1 and r = (N(k-1) - N(k-2)) / N(k-2) (0 when
-        N(k-2) = 0): alpha = 1 - 0.2 (1 + r) when r < -0.1, 1 when |r| <= 0.1, and
-        min(1 + 0.1 (r - 0.1), 1.2) when r > 0.1; alpha = 1 on the first two frames.
-        @note This is the paper's printed rule (@cite Guan2026) as we read it: its signs were lost in
-        typesetting, and this is the only reading that keeps alpha in (0, 1.2]. It jumps from 1 to
-        0.82 at r = -0.1 and reacts one frame late: measured on KITTI (@cite Geiger2012), the
-        standard deviation of the count over frames grows from 66 (alpha = 1) to 94; on a still
-        camera (EuRoC, @cite Burri2016) the count never changes by 10 % and the rule never acts
-        (README, "Results"). */
+        LENGTH_FILTER_NONE = 0,     //!< keep every segment
+        LENGTH_FILTER_ADAPTIVE = 1, //!< the frame's own threshold, alpha = 1: stateless (default)
+        /** the paper's inter-frame rule: alpha from the change r of the kept count over the two
+        previous frames (1 - 0.2 (1 + r) below r = -0.1, 1 up to 0.1, then 1 + 0.1 (r - 0.1), <= 1.2) */
         LENGTH_FILTER_INTERFRAME = 2,
-        /** the same rule made continuous: alpha = max(1 + 0.2 (r + 0.1), 0.8) when r < -0.1.
-        @note Not in the paper: a variant without its jump at r = -0.1. */
-        LENGTH_FILTER_INTERFRAME_CONTINUOUS = 3,
-        /** count tracking: alpha = clamp(1 + 0.5 r', 0.8, 1.2), where r' compares the count this
-        frame keeps with alpha = 1 with the mean kept count of the two previous frames, so that
-        the threshold opposes the frame's own deviation instead of the previous one's. Measured
-        standard deviation of the count over frames: EuRoC 6.3 -> 3.5, KITTI 66 -> 59 (alpha = 1 ->
-        count tracking).
-        @note Not in the paper: our alternative to its one-frame-late rule. */
-        LENGTH_FILTER_COUNT_TRACKING = 4
+        LENGTH_FILTER_INTERFRAME_CONTINUOUS = 3, //!< the same rule without its jump at r = -0.1 (ours)
+        LENGTH_FILTER_COUNT_TRACKING = 4 //!< count tracking (ours): alpha opposes the frame's own count change
     };
 
-    /** @brief The rule of stage 1's length threshold, from the mean @f$\mu@f$ and the population
-    standard deviation @f$\sigma@f$ of the base segments' lengths. */
+    /** @brief The rule of stage 1's threshold, from the mean @f$\mu@f$ and population standard
+    deviation @f$\sigma@f$ of the base segments' lengths, times alpha and lengthThresholdScale. */
     enum LengthThresholdRule
     {
-        /** the paper's @f$\alpha\,\mu\,(1 - |\mu - \sigma| / \mu)@f$, clamped at 0: @f$\alpha\sigma@f$
-        while @f$\sigma \le \mu@f$, then falling to 0 at @f$\sigma = 2\mu@f$, so a frame with a
-        few very long segments among many short ones is hardly filtered (building.jpg with the
-        default base: 1.7 px) */
-        LENGTH_THRESHOLD_PAPER = 0,
-        /** @f$\alpha \min(\mu, \sigma)@f$ (default): the paper's value while
-        @f$\sigma \le \mu@f$, and @f$\alpha\mu@f$ beyond.
-        @note Our default instead of the paper's rule: it keeps the filter working on frames where
-        @f$\sigma > \mu@f$ (building.jpg: 395 instead of 1570 output segments) for 0.003 of F on
-        the YorkUrban check half (doc/parameter_sweep.md). */
-        LENGTH_THRESHOLD_CAPPED = 1
+        LENGTH_THRESHOLD_PAPER = 0, //!< @f$\mu (1 - |\mu - \sigma| / \mu)@f$ clamped at 0 (the paper's)
+        LENGTH_THRESHOLD_CAPPED = 1 //!< @f$\min(\mu, \sigma)@f$: the same while @f$\sigma \le \mu@f$ (default)
     };
 
     /** @brief How stage 3 fuses the segments of a group. */
     enum MergeStrategy
     {
-        MERGE_NONE = 0,          //!< no fusion (stage 2 and 3 are skipped)
-        /** the paper's rule (@cite Guan2026): segments at least getBaselineRatio times as long as
-        the group's longest are baselines, which never fuse with each other; the others fuse into
-        them.
-        @note Where the paper is silent: the other segments fuse in decreasing order of their best
-        score (not of their length), each into its best-scoring baseline, and merging repeats over
-        the group until no score reaches getMergeThreshold, each score computed against the current
-        (already grown) baseline, so that a chain of pieces joins a baseline piece by piece. */
+        MERGE_NONE = 0,          //!< no fusion (stages 2 and 3 are skipped)
+        /** the paper's: segments at least Params::baselineRatio times the group's longest are
+        baselines, which never fuse with each other; the others fuse into them */
         MERGE_BASELINES = 1,
-        /** every segment, from the longest down, absorbs the shorter segments of its group that pass
-        the gate and the threshold, best score first (default). Unlike MERGE_BASELINES, two long
-        collinear pieces of one edge can join, and a chain of short pieces can join each other.
-        @note Not in the paper: our default, chosen by measurement (doc/parameter_sweep.md: every
-        one of the 20 best settings uses it). */
-        MERGE_LONGEST_FIRST = 2
+        MERGE_LONGEST_FIRST = 2  //!< every segment, longest first, absorbs the shorter ones that pass (default)
     };
 
     /** @brief Order of the stages. */
     enum StageOrder
     {
-        FILTER_THEN_MERGE = 0,  //!< the paper's order: length filter, then grouping and merging
-        /** grouping and merging first, then the length filter with the threshold computed on the
-        base segments (default): pieces that merge into a long segment are not lost to the filter.
-        @note Not the paper's order: our default, chosen by measurement (doc/parameter_sweep.md). */
-        MERGE_THEN_FILTER = 1
+        FILTER_THEN_MERGE = 0, //!< the paper's: length filter, then grouping and merging
+        MERGE_THEN_FILTER = 1  //!< merging first, then the filter with the base segments' threshold (default)
     };
 
-    /** @brief Which angle bins may be grouped together in stage 2. */
+    /** @brief Which angle bins group together in stage 2. */
     enum AngleBinning
     {
-        ANGLE_BINS_STRICT = 0,     //!< only segments of the same bin (the paper's rule)
-        /** also the two neighbouring bins, wrapping 180 deg to 0 (default).
-        @note Our fix of the paper's strict bins, where collinear pieces at 9.9 and 10.1 deg (or
-        179.9 and 0.1 deg) could never merge. */
-        ANGLE_BINS_NEIGHBOURS = 1
+        ANGLE_BINS_STRICT = 0,    //!< only segments of the same bin (the paper's)
+        ANGLE_BINS_NEIGHBOURS = 1 //!< also the two neighbouring bins, wrapping 180 deg to 0 (default)
     };
 
-    /** @brief The detector of stage 0, whose segments stages 1-3 post-process.
-
-    Every base returns segments oriented brighter side on the left: LSD and FLD orient them so
-    themselves; EDLines orients a segment along the edge it traced, so LSDAdvance turns each
-    EDLines segment round when the image is brighter on its right (mean of 5 samples 2 px either
-    side). The orientation matters to stage 3: its direction term is the cosine between the
-    directed segments, so two pieces of one edge pointing opposite ways would not fuse. */
+    /** @brief The detector of stage 0. Every base gives segments oriented brighter side on the
+    left (EDLines' are turned round where needed). */
     enum BaseDetector
     {
-        /** OpenCV's cv::LineSegmentDetector (@cite Rafael12) with the lsd* parameters, the base of
-        the paper */
-        BASE_LSD = 0,
-        /** cv::ximgproc::FastLineDetector (@cite Lee14) with the fld* parameters: Canny edges and
-        line fitting, a few times faster than LSD.
-        @note Not in the paper, like BASE_EDLINES: stages 1-3 unchanged on a faster base
-        (doc/performance.md). */
-        BASE_FLD = 1,
-        /** EDLines (@cite akinlar2011edlines) of cv::ximgproc::EdgeDrawing with the ed*
-        parameters: edge drawing, then line fitting with NFA validation, the fastest of the three.
-        @note EDLines orients a segment along the edge chain it traced, not by the gradient:
-        LSDAdvance turns round each of its segments that is brighter on its right (see
-        BaseDetector), so that stage 3 and the output keep LSD's orientation. */
-        BASE_EDLINES = 2,
-        /** The module's own implementation of the LSD algorithm (@cite Rafael12) with the lsd*
-        parameters, written for speed (doc/performance.md); it gives OpenCV's LineSegmentDetector's
-        segments (tested against it on real images) in a fraction of its time. With
-        LSD_REFINE_ADV it validates every segment by its number of false alarms as the published
-        algorithm does, where OpenCV's LineSegmentDetector keeps nearly all of them. The default. */
+        BASE_LSD = 0,     //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams
+        BASE_FLD = 1,     //!< cv::ximgproc::FastLineDetector with FLDParams
+        BASE_EDLINES = 2, //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
+        /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: it
+        gives OpenCV's LineSegmentDetector's segments (doc/performance.md). The default. */
         BASE_FAST_LSD = 3
     };
 
-    /** @brief Detects line segments.
+    /** @brief Named configurations for createLSDAdvance() (doc/algorithm.md, "Presets"). */
+    enum Preset
+    {
+        PRESET_MOST_ACCURATE = 0, //!< the defaults: the highest F on YorkUrban
+        PRESET_FASTEST = 1,       //!< the default stages on the fastest base, BASE_EDLINES
+        /** the paper's: OpenCV's LSD set-up (LSD_REFINE_STD, scale 0.8), LENGTH_THRESHOLD_PAPER,
+        LENGTH_FILTER_INTERFRAME, FILTER_THEN_MERGE, MERGE_BASELINES, proximityRatio 0.1 */
+        PRESET_PAPER = 2,
+        /** video, SLAM: PRESET_MOST_ACCURATE with LENGTH_FILTER_COUNT_TRACKING (steadiest count)
+        and keepStrongSegments (more correct LBD matches at an equal line budget, doc/matching.md) */
+        PRESET_SEQUENCE = 3
+    };
 
-    @param image 8-bit gray (CV_8UC1), BGR (CV_8UC3) or BGRA (CV_8UC4) image, not empty, any size
-    and layout (see "Input." in the class description).
-    @param lines Output N x 1 array of CV_32FC4 (std::vector<cv::Vec4f> works):
-    (x1, y1, x2, y2) per segment, pixel-centre coordinates, oriented as LSD orients them (brighter
-    side on the left, see the class description).
+    /** @brief LSDAdvance's own parameters (those of stages 1-3 and the choice of base). */
+    struct CV_EXPORTS_W_SIMPLE Params
+    {
+        CV_WRAP Params(); //!< the defaults (PRESET_MOST_ACCURATE)
+        CV_PROP_RW int baseDetector;            //!< stage 0, one of BaseDetector. Default BASE_FAST_LSD.
+        CV_PROP_RW int lengthFilterMode;        //!< stage 1, one of LengthFilterMode. Default LENGTH_FILTER_ADAPTIVE.
+        CV_PROP_RW int lengthThresholdRule;     //!< stage 1, one of LengthThresholdRule. Default LENGTH_THRESHOLD_CAPPED.
+        CV_PROP_RW double lengthThresholdScale; //!< factor on stage 1's threshold (below 1 keeps shorter segments), in (0, 10]. Default 1.
+        /** stage 1 also keeps a short segment whose response (computeLineResponses) reaches the
+        threshold the same rule gives on the responses of the frame's base segments: short lines
+        of high contrast, which LBD matches again in the next view. Costs the responses of the
+        base segments; processSegments() has no image and filters by length alone. Default false
+        (true in PRESET_SEQUENCE). */
+        CV_PROP_RW bool keepStrongSegments;
+        CV_PROP_RW int stageOrder;              //!< one of StageOrder. Default MERGE_THEN_FILTER.
+        CV_PROP_RW double angleBinWidth;        //!< stage 2's angle bins, degrees, in [1, 90]. Default 10.
+        CV_PROP_RW int angleBinning;            //!< stage 2, one of AngleBinning. Default ANGLE_BINS_NEIGHBOURS.
+        CV_PROP_RW double endpointDistance;     //!< stage 2: segments with two endpoints closer than this are adjacent, pixels, in [0.1, 200]. Default 10.
+        CV_PROP_RW int mergeStrategy;           //!< stage 3, one of MergeStrategy. Default MERGE_LONGEST_FIRST.
+        CV_PROP_RW double baselineRatio;        //!< MERGE_BASELINES: baselines are at least this share of the longest, in (0, 1]. Default 0.8.
+        CV_PROP_RW double directionWeight;      //!< weight of the score's direction term, in [0, 1]. Default 0.4.
+        CV_PROP_RW double proximityWeight;      //!< weight of the score's proximity term, in [0, 1]. Default 0.35.
+        CV_PROP_RW double lengthWeight;         //!< weight of the score's length term, in [0, 1]. Default 0.2.
+        CV_PROP_RW double proximityRatio;       //!< segments farther apart than this times their mean length never fuse, in (0, 10]. Default 1.
+        CV_PROP_RW double mergeThreshold;       //!< score a segment needs to fuse into a longer one, in [0, 1]. Default 0.6.
+        CV_PROP_RW double maxPerpendicularOffset; //!< both endpoints must lie this close to the longer one's line, pixels, in [0, 100]. Default 1.5.
+    };
 
-    Consecutive calls on one object form a sequence for the inter-frame modes of
-    LengthFilterMode (LENGTH_FILTER_INTERFRAME, _INTERFRAME_CONTINUOUS, _COUNT_TRACKING); call
-    reset() before an unrelated image.
-    */
+    /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
+    LineSegmentDetector) and BASE_FAST_LSD, with the meaning of cv::createLineSegmentDetector's arguments. */
+    struct CV_EXPORTS_W_SIMPLE LSDParams
+    {
+        CV_WRAP LSDParams(); //!< the defaults (OpenCV's LSD uses LSD_REFINE_STD at scale 0.8)
+        CV_PROP_RW int refine;              //!< one of cv::LineSegmentDetectorModes. Default LSD_REFINE_NONE.
+        CV_PROP_RW double scale;            //!< scale at which the image is read, in (0, 1]. Default 1.
+        CV_PROP_RW double sigmaScale;       //!< Gaussian sigma = sigmaScale / scale, used when scale < 1, in (0, 100]. Default 0.6.
+        CV_PROP_RW double quant;            //!< bound to the gradient quantization error, gray levels, in [0, 255]. Default 2.
+        CV_PROP_RW double angleTolerance;   //!< gradient angle tolerance, degrees, in (0, 180). Default 22.5.
+        CV_PROP_RW double logEps;           //!< detection threshold -log10(NFA) with LSD_REFINE_ADV, in [-1000, 1000]. Default 0.
+        CV_PROP_RW double densityThreshold; //!< least share of aligned points in a rectangle, in [0, 1). Default 0.7.
+        CV_PROP_RW int numBins;             //!< bins of the gradient pseudo-ordering, in [1, 65536]. Default 1024.
+    };
+
+    /** @brief FastLineDetector's parameters (@cite Lee14), used by BASE_FLD, with the meaning of
+    cv::ximgproc::createFastLineDetector's arguments. */
+    struct CV_EXPORTS_W_SIMPLE FLDParams
+    {
+        CV_WRAP FLDParams(); //!< the defaults (FastLineDetector's)
+        CV_PROP_RW int lengthThreshold;     //!< shortest segment kept, pixels, in [1, 100000]. Default 10.
+        CV_PROP_RW double distanceThreshold; //!< outlier distance to a hypothesis line, pixels, in (0, 100]. Default 1.414213562.
+        CV_PROP_RW double cannyThreshold1;  //!< first hysteresis threshold of Canny, in (0, 100000]. Default 50.
+        CV_PROP_RW double cannyThreshold2;  //!< second hysteresis threshold of Canny, in (0, 100000]. Default 50.
+        CV_PROP_RW int cannyApertureSize;   //!< Sobel aperture of Canny, 3, 5 or 7. Default 3.
+        CV_PROP_RW bool doMerge;            //!< FastLineDetector's own merging (20 times its cost). Default false.
+    };
+
+    /** @brief Detects line segments (with an inter-frame LengthFilterMode: the next frame).
+    @param image 8-bit gray, BGR or BGRA image (see "Input").
+    @param lines Output N x 1 CV_32FC4: (x1, y1, x2, y2) per segment (see "Output"). */
     CV_WRAP virtual void detect(InputArray image, OutputArray lines) = 0;
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-    /** @brief Detects line segments as KeyLines for line_descriptor's LBD descriptor (@cite LBD)
-    and matcher.
-
+    /** @brief Detects line segments as KeyLines for line_descriptor's LBD (@cite LBD).
     @param image As for detect(InputArray, OutputArray).
-    @param keylines Output: one KeyLine per segment that detect(InputArray, OutputArray) returns,
-    in the same order, filled by linesToKeyLines() exactly as
-    cv::line_descriptor::LSDDetector fills octave 0, so that
-    cv::line_descriptor::BinaryDescriptor::compute() and BinaryDescriptorMatcher take them
-    unchanged, except `response`, which is computeLineResponses()'s: the length weighted by the
-    squared contrast of the line. Sort by it, largest first, to keep a front end's N best lines.
-
-    The call is a frame of the sequence, like detect(InputArray, OutputArray). Present when
-    OpenCV's line_descriptor module is (HAVE_OPENCV_LINE_DESCRIPTOR).
-    */
+    @param keylines Output: one KeyLine per segment detect() returns, in the same order, filled by
+    linesToKeyLines() as cv::line_descriptor::LSDDetector fills octave 0, except `response`:
+    computeLineResponses()'s, the length weighted by the squared contrast. Sort by it, largest
+    first, to keep a front end's N best lines. */
     void detect(InputArray image, std::vector<line_descriptor::KeyLine>& keylines);
 #endif
 
-    /** @brief Runs the stages after base detection on segments from any detector.
+    /** @brief Runs stages 1-3 on segments from any detector; the call is a frame like detect().
+    @param segments N x 1 or 1 x N CV_32FC4, finite, within [-1e7, 1e7) px, oriented as LSD's.
+    @param lines Output like detect().
+    @param imageSize When not empty, the lines are clipped to this image as detect() clips them;
+    when empty (default), not clipped (a fused segment may reach a little beyond its pieces). */
+    CV_WRAP virtual void processSegments(InputArray segments, OutputArray lines, Size imageSize = Size()) = 0;
 
-    @param segments Input segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), oriented as
-    LSD orients them when the orientation of the output matters.
-    @param lines Output like detect(). The call is a frame of the sequence, like detect().
+    /** @brief Draws segments on an image, as LineSegmentDetector::drawSegments does.
+    @param image 8-bit image with 1 or 3 channels; a gray one is converted to BGR in place.
+    @param lines N x 1 (or 1 x N) CV_32FC4 segments, drawn in red, 1 px wide. */
+    CV_WRAP virtual void drawSegments(InputOutputArray image, InputArray lines) = 0;
 
-    Coordinates must be finite and within [-1e7, 1e7) px; anything else throws, and an empty
-    array gives no lines.
-    */
-    CV_WRAP virtual void processSegments(InputArray segments, OutputArray lines) = 0;
-
-    /** @brief Forgets the sequence: the next detect() is the first frame (alpha = 1).
-
-    Every setter (and read()) also resets the sequence: each parameter can change the kept counts.
-    */
+    /** @brief Starts a new sequence: the next call is the first frame (alpha = 1). */
     CV_WRAP virtual void reset() = 0;
-
-    /** @brief Returns counts, the length threshold, alpha and stage times of the last detect().
-    @return The statistics of the last detect() or processSegments() call that succeeded (all
-    zero, alpha 1, before the first). */
+    /** @brief Returns the statistics of the last call.
+    @return Those of the last call that succeeded (zeros, alpha 1, before the first). */
     CV_WRAP virtual LSDAdvanceStats getLastStats() const = 0;
 
-    /** @brief Returns the segments after each stage of the last detect() or processSegments(), to
-    draw or inspect what each stage did (the detect sample's --draw=filter,groups,merge).
-
-    @param baseSegments Output N0 x 1 CV_32FC4: the base detector's segments (stage 0; after
-    processSegments, its input segments).
-    @param filteredSegments Output CV_32FC4: stage 1's output, the segments of its input at least
-    getLastStats().minLength long, in their order (its input unchanged with LENGTH_FILTER_NONE).
-    With FILTER_THEN_MERGE stage 1's input is baseSegments; with MERGE_THEN_FILTER (default) it is
-    mergedSegments, and filteredSegments are the lines detect() returned.
-    @param groupLabels Output N2 x 1 CV_32S, one label per segment entering stage 2 (filteredSegments
-    with FILTER_THEN_MERGE, baseSegments with MERGE_THEN_FILTER), in their order: -1 for a segment
-    alone in its group, otherwise its group's number in [0, getLastStats().mergeGroups), groups
-    numbered in the order of their first segment. Empty with MERGE_NONE (stages 2 and 3 skipped).
-    @param mergedSegments Output CV_32FC4: stage 3's output, the fused segments group by group (its
-    input unchanged with MERGE_NONE). With FILTER_THEN_MERGE these are the lines detect() returned.
-
-    The arrays describe the last call that succeeded (a rejected call changes nothing) and are
-    empty before the first. Counts match getLastStats(): baseSegments, filteredSegments and
-    mergedSegments. Cost: detect() keeps these outputs in its reused buffers at no extra cost; this
-    call copies them (and labels the groups) each time it is called, O(N0).
-    */
+    /** @brief Returns the segments after each stage of the last call, before the clipping.
+    @param baseSegments Output CV_32FC4: the base detector's segments (processSegments' input).
+    @param filteredSegments Output CV_32FC4: stage 1's output (its input with LENGTH_FILTER_NONE),
+    from baseSegments with FILTER_THEN_MERGE, from mergedSegments with MERGE_THEN_FILTER.
+    @param groupLabels Output CV_32S, one per segment entering stage 2: -1 alone, else its group in
+    [0, getLastStats().mergeGroups), numbered by first segment. Empty with MERGE_NONE.
+    @param mergedSegments Output CV_32FC4: stage 3's output (its input with MERGE_NONE). */
     CV_WRAP virtual void getLastStageOutputs(OutputArray baseSegments, OutputArray filteredSegments,
                                              OutputArray groupLabels, OutputArray mergedSegments) const = 0;
 
-    /** @brief Sets the refinement of the base LSD.
-    @param refine One of cv::LineSegmentDetectorModes: LSD_REFINE_NONE, LSD_REFINE_STD or
-    LSD_REFINE_ADV. Default LSD_REFINE_NONE.
-    @note OpenCV's LSD, and the paper's base, use LSD_REFINE_STD at scale 0.8: LSD_REFINE_NONE at
-    scale 1 scores a higher F on YorkUrban and costs about 1.4 times as much (see the class note,
-    doc/parameter_sweep.md, doc/performance.md). */
-    CV_WRAP virtual void setLsdRefine(int refine) = 0;
-    /** @brief Returns the refinement of the base LSD (setLsdRefine()).
-    @return One of cv::LineSegmentDetectorModes. */
-    CV_WRAP virtual int getLsdRefine() const = 0;
-    /** @brief Sets the scale at which the base LSD reads the image.
-    @param scale Scale factor, in (0, 1]. Default 1.0 (OpenCV's LSD: 0.8, see setLsdRefine()). */
-    CV_WRAP virtual void setLsdScale(double scale) = 0;
-    /** @brief Returns the scale at which the base LSD reads the image (setLsdScale()).
-    @return Scale factor, in (0, 1]. */
-    CV_WRAP virtual double getLsdScale() const = 0;
-    /** @brief Sets the Gaussian smoothing of the base LSD, used only when its scale is below 1.
-    @param sigmaScale The Gaussian sigma is sigmaScale / scale, in pixels; in (0, 100]. Default 0.6
-    (OpenCV's). */
-    CV_WRAP virtual void setLsdSigmaScale(double sigmaScale) = 0;
-    /** @brief Returns the sigma scale of the base LSD (setLsdSigmaScale()).
-    @return sigmaScale, in (0, 100]. */
-    CV_WRAP virtual double getLsdSigmaScale() const = 0;
-    /** @brief Sets the bound to the quantization error on the gradient norm of the base LSD.
-    @param quant Gray levels, in [0, 255]. Default 2.0 (OpenCV's). */
-    CV_WRAP virtual void setLsdQuant(double quant) = 0;
-    /** @brief Returns the quantization bound of the base LSD (setLsdQuant()).
-    @return Gray levels, in [0, 255]. */
-    CV_WRAP virtual double getLsdQuant() const = 0;
-    /** @brief Sets the gradient angle tolerance of the base LSD's region growing.
-    @param degrees Degrees, in (0, 180). Default 22.5 (OpenCV's). */
-    CV_WRAP virtual void setLsdAngleTolerance(double degrees) = 0;
-    /** @brief Returns the gradient angle tolerance of the base LSD (setLsdAngleTolerance()).
-    @return Degrees, in (0, 180). */
-    CV_WRAP virtual double getLsdAngleTolerance() const = 0;
-    /** @brief Sets the detection threshold of the base LSD, used only with LSD_REFINE_ADV.
-    @param logEps A segment is kept when -log10(NFA) > logEps; in [-1000, 1000]. Default 0
-    (OpenCV's). */
-    CV_WRAP virtual void setLsdLogEps(double logEps) = 0;
-    /** @brief Returns the detection threshold of the base LSD (setLsdLogEps()).
-    @return logEps, in [-1000, 1000]. */
-    CV_WRAP virtual double getLsdLogEps() const = 0;
-    /** @brief Sets the minimal density of aligned points in a region's rectangle, used with
-    LSD_REFINE_STD and LSD_REFINE_ADV.
-    @param density Share of the rectangle's points, in [0, 1). Default 0.7 (OpenCV's). */
-    CV_WRAP virtual void setLsdDensityThreshold(double density) = 0;
-    /** @brief Returns the density threshold of the base LSD (setLsdDensityThreshold()).
-    @return Share, in [0, 1). */
-    CV_WRAP virtual double getLsdDensityThreshold() const = 0;
-    /** @brief Sets the number of bins in the base LSD's pseudo-ordering of the gradient modulus.
-    @param bins Count, in [1, 65536]. Default 1024 (OpenCV's). */
-    CV_WRAP virtual void setLsdNumBins(int bins) = 0;
-    /** @brief Returns the number of gradient bins of the base LSD (setLsdNumBins()).
-    @return Count, in [1, 65536]. */
-    CV_WRAP virtual int getLsdNumBins() const = 0;
+    /** @brief Returns, for each line of the last call, the base segments it was made from.
+    @param sources Output, one CV_32S array (std::vector<int>) per returned line, in order: the
+    increasing indices into getLastStageOutputs()' baseSegments of the segments fused into it. */
+    CV_WRAP virtual void getLastSources(OutputArrayOfArrays sources) const = 0;
 
-    /** @brief Sets the detector of stage 0.
-    @param detector One of LSDAdvance::BaseDetector. Default BASE_FAST_LSD.
+    CV_WRAP virtual LSDAdvance::Params getParams() const = 0; //!< @brief Returns Params. @return Every field.
+    /** @brief Sets Params. @param params Every field, all validated before any changes. */
+    CV_WRAP virtual void setParams(const LSDAdvance::Params& params) = 0;
+    CV_WRAP virtual LSDAdvance::LSDParams getLSDParams() const = 0; //!< @brief Returns BASE_LSD's and BASE_FAST_LSD's. @return Every field.
+    /** @brief Sets those of BASE_LSD and BASE_FAST_LSD. @param params Every field, all validated first. */
+    CV_WRAP virtual void setLSDParams(const LSDAdvance::LSDParams& params) = 0;
+    CV_WRAP virtual LSDAdvance::FLDParams getFLDParams() const = 0; //!< @brief Returns BASE_FLD's. @return Every field.
+    /** @brief Sets the parameters of BASE_FLD. @param params Every field, all validated first. */
+    CV_WRAP virtual void setFLDParams(const LSDAdvance::FLDParams& params) = 0;
+    /** @brief Returns BASE_EDLINES'. @return Every field (EdgeDrawing's defaults unless set). */
+    CV_WRAP virtual EdgeDrawing::Params getEDLinesParams() const = 0;
+    /** @brief Sets the parameters of BASE_EDLINES. @param params Every field, all validated first:
+    GradientThresholdValue [1, 10000], AnchorThresholdValue [0, 10000], ScanInterval [1, 100],
+    MinPathLength [2, 100000] px, Sigma [0, 100] px, MinLineLength -1 (from the image size) or
+    [9, 100000] px, MaxDistanceBetweenTwoLines (0, 1000] px, LineFitErrorThreshold [0.5, 100] px,
+    MaxErrorThreshold (0, 100] px. */
+    CV_WRAP virtual void setEDLinesParams(const EdgeDrawing::Params& params) = 0;
 
-    Each base has its own parameters (lsd*, fld*, ed*); those of the other bases are kept but
-    unused. */
-    CV_WRAP virtual void setBaseDetector(int detector) = 0;
-    /** @brief Returns the detector of stage 0 (setBaseDetector()).
-    @return One of LSDAdvance::BaseDetector. */
-    CV_WRAP virtual int getBaseDetector() const = 0;
-
-    /** @brief BASE_FLD: sets the length below which FastLineDetector discards a segment.
-    @param pixels Pixels, in [1, 100000]. Default 10 (FastLineDetector's). */
-    CV_WRAP virtual void setFldLengthThreshold(int pixels) = 0;
-    /** @brief BASE_FLD: returns FastLineDetector's length threshold (setFldLengthThreshold()).
-    @return Pixels, in [1, 100000]. */
-    CV_WRAP virtual int getFldLengthThreshold() const = 0;
-    /** @brief BASE_FLD: sets the distance beyond which a point is an outlier of a hypothesis line.
-    @param pixels Pixels, in (0, 100]. Default 1.414213562 (FastLineDetector's). */
-    CV_WRAP virtual void setFldDistanceThreshold(double pixels) = 0;
-    /** @brief BASE_FLD: returns FastLineDetector's outlier distance (setFldDistanceThreshold()).
-    @return Pixels, in (0, 100]. */
-    CV_WRAP virtual double getFldDistanceThreshold() const = 0;
-    /** @brief BASE_FLD: sets the first hysteresis threshold of FastLineDetector's Canny.
-    @param threshold Gradient magnitude, in (0, 100000]. Default 50 (FastLineDetector's). */
-    CV_WRAP virtual void setFldCannyThreshold1(double threshold) = 0;
-    /** @brief BASE_FLD: returns the first Canny threshold (setFldCannyThreshold1()).
-    @return Gradient magnitude, in (0, 100000]. */
-    CV_WRAP virtual double getFldCannyThreshold1() const = 0;
-    /** @brief BASE_FLD: sets the second hysteresis threshold of FastLineDetector's Canny.
-    @param threshold Gradient magnitude, in (0, 100000]. Default 50 (FastLineDetector's). */
-    CV_WRAP virtual void setFldCannyThreshold2(double threshold) = 0;
-    /** @brief BASE_FLD: returns the second Canny threshold (setFldCannyThreshold2()).
-    @return Gradient magnitude, in (0, 100000]. */
-    CV_WRAP virtual double getFldCannyThreshold2() const = 0;
-    /** @brief BASE_FLD: sets the aperture of the Sobel operator of FastLineDetector's Canny.
-    @param size 3, 5 or 7 (pixels). Default 3 (FastLineDetector's). */
-    CV_WRAP virtual void setFldCannyApertureSize(int size) = 0;
-    /** @brief BASE_FLD: returns the Sobel aperture of Canny (setFldCannyApertureSize()).
-    @return 3, 5 or 7. */
-    CV_WRAP virtual int getFldCannyApertureSize() const = 0;
-    /** @brief BASE_FLD: switches FastLineDetector's own incremental merging of segments.
-    @param merge true to let FastLineDetector merge. Default false (FastLineDetector's): stage 3
-    merges, and FLD's merging costs about 20 times its detection (README, "Results"). */
-    CV_WRAP virtual void setFldDoMerge(bool merge) = 0;
-    /** @brief BASE_FLD: returns whether FastLineDetector merges (setFldDoMerge()).
-    @return true when FastLineDetector's merging is on. */
-    CV_WRAP virtual bool getFldDoMerge() const = 0;
-
-    /** @brief BASE_EDLINES: sets EdgeDrawing's gradient operator.
-    @param op One of cv::ximgproc::EdgeDrawing::GradientOperator: PREWITT = 0, SOBEL = 1,
-    SCHARR = 2, LSD = 3. Default PREWITT (EdgeDrawing's). */
-    CV_WRAP virtual void setEdGradientOperator(int op) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's gradient operator (setEdGradientOperator()).
-    @return One of cv::ximgproc::EdgeDrawing::GradientOperator. */
-    CV_WRAP virtual int getEdGradientOperator() const = 0;
-    /** @brief BASE_EDLINES: sets the gradient below which a pixel is not an edge.
-    @param threshold Gray levels summed over the operator, in [1, 10000]. Default 20
-    (EdgeDrawing's). */
-    CV_WRAP virtual void setEdGradientThreshold(int threshold) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's gradient threshold (setEdGradientThreshold()).
-    @return Gray levels summed over the operator, in [1, 10000]. */
-    CV_WRAP virtual int getEdGradientThreshold() const = 0;
-    /** @brief BASE_EDLINES: sets by how much an anchor's gradient must exceed its neighbours'.
-    @param threshold Gray levels summed over the operator, in [0, 10000]. Default 0
-    (EdgeDrawing's). */
-    CV_WRAP virtual void setEdAnchorThreshold(int threshold) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's anchor threshold (setEdAnchorThreshold()).
-    @return Gray levels summed over the operator, in [0, 10000]. */
-    CV_WRAP virtual int getEdAnchorThreshold() const = 0;
-    /** @brief BASE_EDLINES: sets the rows and columns where anchors are sought.
-    @param interval Every interval-th row and column, in [1, 100]. Default 1 (EdgeDrawing's). */
-    CV_WRAP virtual void setEdScanInterval(int interval) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's anchor scan interval (setEdScanInterval()).
-    @return Rows and columns, in [1, 100]. */
-    CV_WRAP virtual int getEdScanInterval() const = 0;
-    /** @brief BASE_EDLINES: sets the length of the shortest edge chain kept.
-    @param pixels Pixels, in [2, 100000]. Default 10 (EdgeDrawing's). */
-    CV_WRAP virtual void setEdMinPathLength(int pixels) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's shortest edge chain (setEdMinPathLength()).
-    @return Pixels, in [2, 100000]. */
-    CV_WRAP virtual int getEdMinPathLength() const = 0;
-    /** @brief BASE_EDLINES: sets the sigma of the Gaussian smoothing before the gradient.
-    @param sigma Pixels, in [0, 100]; below 1 the image is not smoothed. Default 1.0
-    (EdgeDrawing's). */
-    CV_WRAP virtual void setEdSigma(double sigma) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's smoothing sigma (setEdSigma()).
-    @return Pixels, in [0, 100]. */
-    CV_WRAP virtual double getEdSigma() const = 0;
-    /** @brief BASE_EDLINES: sets whether only lines validated by the number of false alarms are kept.
-    @param validate true to validate. Default true (EdgeDrawing's). */
-    CV_WRAP virtual void setEdNfaValidation(bool validate) = 0;
-    /** @brief BASE_EDLINES: returns whether EdgeDrawing validates lines (setEdNfaValidation()).
-    @return true when NFA validation is on. */
-    CV_WRAP virtual bool getEdNfaValidation() const = 0;
-    /** @brief BASE_EDLINES: sets the length of the shortest line fitted.
-    @param pixels -1 (default, EdgeDrawing's) computes it from the image size as EdgeDrawing does;
-    otherwise pixels, in [9, 100000] (EdgeDrawing never fits shorter). */
-    CV_WRAP virtual void setEdMinLineLength(int pixels) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's shortest line (setEdMinLineLength()).
-    @return -1 (from the image size) or pixels, in [9, 100000]. */
-    CV_WRAP virtual int getEdMinLineLength() const = 0;
-    /** @brief BASE_EDLINES: sets the largest distance of an edge pixel to its fitted line.
-    @param pixels Pixels, in (0, 100]. Default 1.0 (EdgeDrawing's). */
-    CV_WRAP virtual void setEdLineFitErrorThreshold(double pixels) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's line fit error (setEdLineFitErrorThreshold()).
-    @return Pixels, in (0, 100]. */
-    CV_WRAP virtual double getEdLineFitErrorThreshold() const = 0;
-    /** @brief BASE_EDLINES: EdgeDrawing joins two collinear lines whose ends are closer than this
-    (and whose joined line fits both within getEdMaxErrorThreshold).
-    @param pixels Pixels, in (0, 1000]. Default 6.0 (EdgeDrawing's). */
-    CV_WRAP virtual void setEdMaxDistanceBetweenTwoLines(double pixels) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's joining distance
-    (setEdMaxDistanceBetweenTwoLines()).
-    @return Pixels, in (0, 1000]. */
-    CV_WRAP virtual double getEdMaxDistanceBetweenTwoLines() const = 0;
-    /** @brief BASE_EDLINES: EdgeDrawing joins two lines (see setEdMaxDistanceBetweenTwoLines) only
-    when the joined line fits both within this error.
-    @param pixels Pixels, in (0, 100]. Default 1.3 (EdgeDrawing's). */
-    CV_WRAP virtual void setEdMaxErrorThreshold(double pixels) = 0;
-    /** @brief BASE_EDLINES: returns EdgeDrawing's joining error (setEdMaxErrorThreshold()).
-    @return Pixels, in (0, 100]. */
-    CV_WRAP virtual double getEdMaxErrorThreshold() const = 0;
-
-    /** @brief Sets how stage 1 (adaptive length suppression) runs.
-    @param mode One of LSDAdvance::LengthFilterMode. Default LENGTH_FILTER_INTERFRAME (the
-    paper's). */
-    CV_WRAP virtual void setLengthFilterMode(int mode) = 0;
-    /** @brief Returns the mode of stage 1 (setLengthFilterMode()).
-    @return One of LSDAdvance::LengthFilterMode. */
-    CV_WRAP virtual int getLengthFilterMode() const = 0;
-
-    /** @brief Sets the rule of stage 1's length threshold.
-    @param rule One of LSDAdvance::LengthThresholdRule. Default LENGTH_THRESHOLD_CAPPED.
-    @note The paper's rule is LENGTH_THRESHOLD_PAPER; see LENGTH_THRESHOLD_CAPPED for why the
-    default differs. */
-    CV_WRAP virtual void setLengthThreshold(int rule) = 0;
-    /** @brief Returns the rule of stage 1's length threshold (setLengthThreshold()).
-    @return One of LSDAdvance::LengthThresholdRule. */
-    CV_WRAP virtual int getLengthThreshold() const = 0;
-    /** @brief Sets the factor applied to stage 1's threshold (before @f$\alpha@f$).
-    @param scale In (0, 10]. Default 1. Below 1 the filter keeps more, shorter segments: for LBD line
-    matching 0.5 doubles the correct matches at the defaults' matching precision, with about twice
-    the segments (doc/matching.md); LENGTH_FILTER_NONE keeps all of them. */
-    CV_WRAP virtual void setLengthThresholdScale(double scale) = 0;
-    /** @brief Returns the factor applied to stage 1's threshold (setLengthThresholdScale()).
-    @return Factor, in (0, 10]. */
-    CV_WRAP virtual double getLengthThresholdScale() const = 0;
-    /** @brief Sets whether stage 1 also keeps short segments that are strong.
-    @param keep true (default): a segment shorter than the length threshold is kept when its
-    response (computeLineResponses) reaches the threshold the same rule (LengthThresholdRule,
-    alpha, getLengthThresholdScale) gives on the responses of the frame's base segments; false: the
-    paper's filter, by length alone. processSegments() has no image and so no responses: it
-    filters by length alone either way.
-    @note Not in the paper: short segments of high contrast are the ones a line matcher finds
-    again in the next view; the length filter alone dropped them (doc/matching.md). */
-    CV_WRAP virtual void setKeepStrongSegments(bool keep) = 0;
-    /** @brief Returns whether stage 1 keeps strong short segments (setKeepStrongSegments()).
-    @return true when it does. */
-    CV_WRAP virtual bool getKeepStrongSegments() const = 0;
-
-    /** @brief Sets how stage 3 fuses the segments of a group.
-    @param strategy One of LSDAdvance::MergeStrategy. Default MERGE_LONGEST_FIRST.
-    @note The paper's rule is MERGE_BASELINES. */
-    CV_WRAP virtual void setMergeStrategy(int strategy) = 0;
-    /** @brief Returns the strategy of stage 3 (setMergeStrategy()).
-    @return One of LSDAdvance::MergeStrategy. */
-    CV_WRAP virtual int getMergeStrategy() const = 0;
-    /** @brief Sets the order of the stages.
-    @param order One of LSDAdvance::StageOrder. Default MERGE_THEN_FILTER.
-    @note The paper's order is FILTER_THEN_MERGE. */
-    CV_WRAP virtual void setStageOrder(int order) = 0;
-    /** @brief Returns the order of the stages (setStageOrder()).
-    @return One of LSDAdvance::StageOrder. */
-    CV_WRAP virtual int getStageOrder() const = 0;
-
-    /** @brief Sets the width of the angle bins of stage 2.
-    @param degrees Degrees, in [1, 90]. Default 10 (the paper's).
-
-    The undirected angle range [0, 180) is cut into ceil(180 / width) bins; when the width
-    does not divide 180 the last bin is narrower. */
-    CV_WRAP virtual void setAngleBinWidth(double degrees) = 0;
-    /** @brief Returns the width of the angle bins (setAngleBinWidth()).
-    @return Degrees, in [1, 90]. */
-    CV_WRAP virtual double getAngleBinWidth() const = 0;
-    /** @brief Sets which angle bins group together in stage 2.
-    @param binning One of LSDAdvance::AngleBinning. Default ANGLE_BINS_NEIGHBOURS.
-    @note The paper's rule is ANGLE_BINS_STRICT; see ANGLE_BINS_NEIGHBOURS. */
-    CV_WRAP virtual void setAngleBinning(int binning) = 0;
-    /** @brief Returns which angle bins group together (setAngleBinning()).
-    @return One of LSDAdvance::AngleBinning. */
-    CV_WRAP virtual int getAngleBinning() const = 0;
-    /** @brief Sets the endpoint distance of stage 2: two segments (of the same or a paired angle
-    bin) are adjacent when an endpoint of one is closer than this to an endpoint of the other.
-    @param pixels Pixels, in [0.1, 200]. Default 10.
-    @note The paper gives no value: 10 px was chosen by measurement (doc/parameter_sweep.md). */
-    CV_WRAP virtual void setEndpointDistance(double pixels) = 0;
-    /** @brief Returns the endpoint distance of stage 2 (setEndpointDistance()).
-    @return Pixels, in [0.1, 200]. */
-    CV_WRAP virtual double getEndpointDistance() const = 0;
-
-    /** @brief With MERGE_BASELINES, sets which segments of a group are baselines: those at least
-    this share of the group's longest. Unused by the other strategies.
-    @param ratio Share of the longest segment's length, in (0, 1]. Default 0.8 (the paper's). */
-    CV_WRAP virtual void setBaselineRatio(double ratio) = 0;
-    /** @brief Returns the baseline ratio (setBaselineRatio()).
-    @return Share of the longest segment's length, in (0, 1]. */
-    CV_WRAP virtual double getBaselineRatio() const = 0;
-    /** @brief Sets the weight @f$w_d@f$ of the direction term of stage 3's score.
-    @param weight In [0, 1]. Default 0.4 (the paper's). The weights need not sum to 1: the
-    highest score is their sum (0.95 by default). */
-    CV_WRAP virtual void setDirectionWeight(double weight) = 0;
-    /** @brief Returns the weight of the direction term (setDirectionWeight()).
-    @return In [0, 1]. */
-    CV_WRAP virtual double getDirectionWeight() const = 0;
-    /** @brief Sets the weight @f$w_p@f$ of the proximity term of stage 3's score.
-    @param weight In [0, 1]. Default 0.35 (the paper's). */
-    CV_WRAP virtual void setProximityWeight(double weight) = 0;
-    /** @brief Returns the weight of the proximity term (setProximityWeight()).
-    @return In [0, 1]. */
-    CV_WRAP virtual double getProximityWeight() const = 0;
-    /** @brief Sets the weight @f$w_l@f$ of the length term of stage 3's score.
-    @param weight In [0, 1]. Default 0.2 (the paper's). */
-    CV_WRAP virtual void setLengthWeight(double weight) = 0;
-    /** @brief Returns the weight of the length term (setLengthWeight()).
-    @return In [0, 1]. */
-    CV_WRAP virtual double getLengthWeight() const = 0;
-    /** @brief Sets the proximity distance of stage 3: @f$D_{th}@f$ = ratio times the mean length
-    of the two segments; the proximity term @f$1 - D_{min}/D_{th}@f$ reaches 0 there, and
-    farther segments never fuse.
-    @param ratio Share of the pair's mean length, in (0, 10]. Default 1.0.
-    @note The paper uses 0.1; 1.0 was chosen by measurement (doc/parameter_sweep.md). */
-    CV_WRAP virtual void setProximityRatio(double ratio) = 0;
-    /** @brief Returns the proximity ratio (setProximityRatio()).
-    @return Share of the pair's mean length, in (0, 10]. */
-    CV_WRAP virtual double getProximityRatio() const = 0;
-    /** @brief Sets the merge threshold: a segment fuses into a longer one (its baseline with
-    MERGE_BASELINES) when its score reaches this, it lies closer than @f$D_{th}@f$
-    (setProximityRatio()) and it passes the gate of setMaxPerpendicularOffset().
-    @param threshold Score, in [0, 1]. Default 0.6.
-    @note Not in the paper, which gives neither a threshold nor the distance condition
-    @f$D_{min} < D_{th}@f$: 0.6 was chosen by measurement (doc/parameter_sweep.md), and the
-    distance condition keeps direction and length alone (up to 0.6 with the default weights) from
-    joining pieces far apart. */
-    CV_WRAP virtual void setMergeThreshold(double threshold) = 0;
-    /** @brief Returns the merge threshold (setMergeThreshold()).
-    @return Score, in [0, 1]. */
-    CV_WRAP virtual double getMergeThreshold() const = 0;
-    /** @brief Sets the perpendicular gate of stage 3: a segment fuses into a longer one only when
-    both its endpoints lie within this distance of the longer one's supporting line.
-    @param pixels Pixels, in [0, 100]. Default 1.5.
-    @note Not in the paper: the gate keeps two parallel edges 2 px apart from fusing; 1.5 px was
-    chosen by measurement (doc/parameter_sweep.md). */
-    CV_WRAP virtual void setMaxPerpendicularOffset(double pixels) = 0;
-    /** @brief Returns the perpendicular gate of stage 3 (setMaxPerpendicularOffset()).
-    @return Pixels, in [0, 100]. */
-    CV_WRAP virtual double getMaxPerpendicularOffset() const = 0;
+    CV_WRAP virtual void setBaseDetector(int detector) = 0;            //!< @brief Sets Params::baseDetector. @param detector The new value.
+    CV_WRAP virtual int getBaseDetector() const = 0;                   //!< @brief Returns Params::baseDetector. @return The value.
+    CV_WRAP virtual void setLengthFilterMode(int mode) = 0;            //!< @brief Sets Params::lengthFilterMode. @param mode The new value.
+    CV_WRAP virtual int getLengthFilterMode() const = 0;               //!< @brief Returns Params::lengthFilterMode. @return The value.
+    CV_WRAP virtual void setLengthThresholdRule(int rule) = 0;         //!< @brief Sets Params::lengthThresholdRule. @param rule The new value.
+    CV_WRAP virtual int getLengthThresholdRule() const = 0;            //!< @brief Returns Params::lengthThresholdRule. @return The value.
+    CV_WRAP virtual void setLengthThresholdScale(double scale) = 0;    //!< @brief Sets Params::lengthThresholdScale. @param scale The new value.
+    CV_WRAP virtual double getLengthThresholdScale() const = 0;        //!< @brief Returns Params::lengthThresholdScale. @return The value.
+    CV_WRAP virtual void setKeepStrongSegments(bool keep) = 0;         //!< @brief Sets Params::keepStrongSegments. @param keep The new value.
+    CV_WRAP virtual bool getKeepStrongSegments() const = 0;            //!< @brief Returns Params::keepStrongSegments. @return The value.
+    CV_WRAP virtual void setStageOrder(int order) = 0;                 //!< @brief Sets Params::stageOrder. @param order The new value.
+    CV_WRAP virtual int getStageOrder() const = 0;                     //!< @brief Returns Params::stageOrder. @return The value.
+    CV_WRAP virtual void setAngleBinWidth(double degrees) = 0;         //!< @brief Sets Params::angleBinWidth. @param degrees The new value.
+    CV_WRAP virtual double getAngleBinWidth() const = 0;               //!< @brief Returns Params::angleBinWidth. @return The value.
+    CV_WRAP virtual void setAngleBinning(int binning) = 0;             //!< @brief Sets Params::angleBinning. @param binning The new value.
+    CV_WRAP virtual int getAngleBinning() const = 0;                   //!< @brief Returns Params::angleBinning. @return The value.
+    CV_WRAP virtual void setEndpointDistance(double pixels) = 0;       //!< @brief Sets Params::endpointDistance. @param pixels The new value.
+    CV_WRAP virtual double getEndpointDistance() const = 0;            //!< @brief Returns Params::endpointDistance. @return The value.
+    CV_WRAP virtual void setMergeStrategy(int strategy) = 0;           //!< @brief Sets Params::mergeStrategy. @param strategy The new value.
+    CV_WRAP virtual int getMergeStrategy() const = 0;                  //!< @brief Returns Params::mergeStrategy. @return The value.
+    CV_WRAP virtual void setBaselineRatio(double ratio) = 0;           //!< @brief Sets Params::baselineRatio. @param ratio The new value.
+    CV_WRAP virtual double getBaselineRatio() const = 0;               //!< @brief Returns Params::baselineRatio. @return The value.
+    CV_WRAP virtual void setDirectionWeight(double weight) = 0;        //!< @brief Sets Params::directionWeight. @param weight The new value.
+    CV_WRAP virtual double getDirectionWeight() const = 0;             //!< @brief Returns Params::directionWeight. @return The value.
+    CV_WRAP virtual void setProximityWeight(double weight) = 0;        //!< @brief Sets Params::proximityWeight. @param weight The new value.
+    CV_WRAP virtual double getProximityWeight() const = 0;             //!< @brief Returns Params::proximityWeight. @return The value.
+    CV_WRAP virtual void setLengthWeight(double weight) = 0;           //!< @brief Sets Params::lengthWeight. @param weight The new value.
+    CV_WRAP virtual double getLengthWeight() const = 0;                //!< @brief Returns Params::lengthWeight. @return The value.
+    CV_WRAP virtual void setProximityRatio(double ratio) = 0;          //!< @brief Sets Params::proximityRatio. @param ratio The new value.
+    CV_WRAP virtual double getProximityRatio() const = 0;              //!< @brief Returns Params::proximityRatio. @return The value.
+    CV_WRAP virtual void setMergeThreshold(double threshold) = 0;      //!< @brief Sets Params::mergeThreshold. @param threshold The new value.
+    CV_WRAP virtual double getMergeThreshold() const = 0;              //!< @brief Returns Params::mergeThreshold. @return The value.
+    CV_WRAP virtual void setMaxPerpendicularOffset(double pixels) = 0; //!< @brief Sets Params::maxPerpendicularOffset. @param pixels The new value.
+    CV_WRAP virtual double getMaxPerpendicularOffset() const = 0;      //!< @brief Returns Params::maxPerpendicularOffset. @return The value.
 };
 
-/** @brief Creates an LSDAdvance detector; every other parameter has its documented default.
-
-@param lengthFilterMode Stage 1 mode, one of LSDAdvance::LengthFilterMode. Default LENGTH_FILTER_INTERFRAME.
-@param endpointDistance Endpoint adjacency distance of stage 2, pixels, in [0.1, 200]. Default 10.
-@param mergeThreshold Score a segment needs to fuse into a longer one, in [0, 1]. Default 0.6.
-@return A new detector with an empty sequence. Throws cv::Exception, naming the parameter and
-its valid range, when an argument is out of range.
-*/
-CV_EXPORTS_W Ptr<LSDAdvance> createLSDAdvance(int lengthFilterMode = LSDAdvance::LENGTH_FILTER_INTERFRAME,
-                                              double endpointDistance = 10.0,
-                                              double mergeThreshold = 0.6);
-
-/** @brief Computes the response of line segments on the image they were detected in: how much
-evidence of an edge they carry, for ranking lines (KeyLine::response of LSDAdvance::detect) and for
-stage 1's strong segments.
-
-@param image 8-bit gray, BGR or BGRA image, not empty (colour is converted to gray as detect()
-converts it).
-@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), (x1, y1, x2, y2) in
-pixels, finite, oriented as LSD orients them (brighter side on the left).
-@param responses Output N x 1 CV_32FC1 (std::vector<float> works), in the order of lines:
-@f$v \cdot (l / \max(W, H)) \cdot (\bar c / 255)^2@f$, with l the length in pixels, @f$\bar c@f$ the mean
-gray-level step across the segment: at the centre of each unit step along it, the bilinear gray
-level 1 px to its left minus 1 px to its right (coordinates clamped into the image), negative
-steps counting 0; and v = 1 for a segment inside the image, 0.1 for one the image border cuts (an
-endpoint within 2 px of the first or last pixel centre of a row or column, or beyond). In [0,
-sqrt(2)]: cv::line_descriptor::LSDDetector's response (l / max(W, H)) for a line of full contrast
-(255 gray levels) inside the image, less for weaker ones, 0 for a segment whose left is not
-brighter.
-
-Ranked by response, a line budget keeps long lines of high contrast first, short lines of high
-contrast before long faint ones, and lines the border cuts last: measured on HPatches and KITTI,
-these are the lines LBD matches again, and correctly, in the next view (doc/matching.md). Throws cv::Exception on an empty image, another
-image type, or another layout of lines.
-*/
-CV_EXPORTS_W void computeLineResponses(InputArray image, InputArray lines, OutputArray responses);
-
-#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-/** @brief Converts segments to KeyLines of octave 0, field by field as
-cv::line_descriptor::LSDDetector does, for the LBD descriptor (@cite LBD) and its matcher.
-
-@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), (x1, y1, x2, y2) in
-pixels, finite.
-@param imageSize Size of the image they were detected in, both sides at least 1 px.
-@param keylines Output, one KeyLine per segment in the same order. Each coordinate is first clamped
-as LSDDetector clamps it: below 0 it becomes 0, at or beyond the width (height) it becomes
-width - 1 (height - 1); then `startPoint*` and
-`sPointInOctave*` are the first endpoint, `endPoint*` and `ePointInOctave*` the second, `pt` the
-midpoint, `lineLength` the length in pixels, `angle` = atan2(dy, dx) in radians in (-pi, pi],
-`size` = dx * dy (LSDDetector's definition, signed), `numOfPixels` the number of pixels of the
-8-connected digital line between the endpoints, `octave` 0, `class_id` the index of the segment,
-and `response` = lineLength / max(width, height), in [0, sqrt(2)], as LSDDetector sets it (the
-length alone: these are lines without their image; LSDAdvance::detect(image, keylines) sets
-computeLineResponses()'s instead).
-*/
-CV_EXPORTS void linesToKeyLines(InputArray lines, Size imageSize, std::vector<line_descriptor::KeyLine>& keylines);
-
-/** @brief Converts KeyLines back to segments.
-
-@param keylines KeyLines of any octave.
-@param lines Output N x 1 CV_32FC4 (std::vector<cv::Vec4f> works), in the same order:
-(x1, y1, x2, y2) = (startPointX, startPointY, endPointX, endPointY), pixels. The octave copies
-are ignored: the full-resolution endpoints are used whatever the octave. */
-CV_EXPORTS void keyLinesToLines(const std::vector<line_descriptor::KeyLine>& keylines, OutputArray lines);
-#endif
+/** @brief Creates an LSDAdvance detector.
+@param preset One of LSDAdvance::Preset. Default PRESET_MOST_ACCURATE (every parameter at its default).
+@return A new detector with an empty sequence. Throws cv::Exception on an unknown preset. */
+CV_EXPORTS_W Ptr<LSDAdvance> createLSDAdvance(LSDAdvance::Preset preset = LSDAdvance::PRESET_MOST_ACCURATE);
 
 //! @} lsd_advance
 

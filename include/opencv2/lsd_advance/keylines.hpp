@@ -1,0 +1,77 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_LSD_ADVANCE_KEYLINES_HPP
+#define OPENCV_LSD_ADVANCE_KEYLINES_HPP
+
+#include "opencv2/core.hpp"
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+#include "opencv2/line_descriptor.hpp"
+#endif
+
+namespace cv {
+namespace ximgproc {
+
+//! @addtogroup lsd_advance
+//! @{
+
+/** @brief Computes the response of line segments on the image they were detected in: how much
+evidence of an edge they carry, for ranking lines (KeyLine::response of LSDAdvance::detect) and for
+stage 1's strong segments (LSDAdvance::Params::keepStrongSegments).
+
+@param image 8-bit gray, BGR or BGRA image, not empty (colour is converted to gray as
+LSDAdvance::detect converts it).
+@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), (x1, y1, x2, y2) in
+pixels, finite, oriented as LSD orients them (brighter side on the left).
+@param responses Output N x 1 CV_32FC1 (std::vector<float> works), in the order of lines:
+@f$v \cdot (l / \max(W, H)) \cdot (\bar c / 255)^2@f$, with l the length in pixels, @f$\bar c@f$
+the mean gray-level step across the segment (at the centre of each unit step along it, the
+bilinear gray level 1 px to its left minus 1 px to its right, coordinates clamped into the image,
+negative steps counting 0), and v = 1 for a segment inside the image, 0.1 for one the image border
+cuts (an endpoint within 2 px of the first or last pixel centre of a row or column, or beyond).
+In [0, sqrt(2)]: cv::line_descriptor::LSDDetector's response (l / max(W, H)) for a line of full
+contrast inside the image, less for weaker ones, 0 for a segment whose left is not brighter.
+
+Ranked by response, a line budget keeps long lines of high contrast first, short lines of high
+contrast before long faint ones, and lines the border cuts last: the lines LBD matches again, and
+correctly, in the next view (doc/matching.md). Throws cv::Exception on an empty image, another
+image type, or another layout of lines.
+*/
+CV_EXPORTS_W void computeLineResponses(InputArray image, InputArray lines, OutputArray responses);
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+
+/** @brief Converts segments to KeyLines of octave 0, field by field as
+cv::line_descriptor::LSDDetector does, for the LBD descriptor (@cite LBD) and its matcher.
+
+@param lines Segments, N x 1 or 1 x N CV_32FC4 (std::vector<cv::Vec4f>), (x1, y1, x2, y2) in
+pixels, finite.
+@param imageSize Size of the image they were detected in, both sides at least 1 px.
+@param keylines Output, one KeyLine per segment in the same order. Each coordinate is first clamped
+as LSDDetector clamps it: below 0 it becomes 0, at or beyond the width (height) it becomes
+width - 1 (height - 1); then `startPoint*` and
+`sPointInOctave*` are the first endpoint, `endPoint*` and `ePointInOctave*` the second, `pt` the
+midpoint, `lineLength` the length in pixels, `angle` = atan2(dy, dx) in radians in (-pi, pi],
+`size` = dx * dy (LSDDetector's definition, signed), `numOfPixels` the number of pixels of the
+8-connected digital line between the endpoints, `octave` 0, `class_id` the index of the segment,
+and `response` = lineLength / max(width, height), in [0, sqrt(2)], as LSDDetector sets it (the
+length alone: these are lines without their image; LSDAdvance::detect(image, keylines) sets
+computeLineResponses()'s instead).
+*/
+CV_EXPORTS void linesToKeyLines(InputArray lines, Size imageSize, std::vector<line_descriptor::KeyLine>& keylines);
+
+/** @brief Converts KeyLines back to segments.
+
+@param keylines KeyLines of any octave.
+@param lines Output N x 1 CV_32FC4 (std::vector<cv::Vec4f> works), in the same order:
+(x1, y1, x2, y2) = (startPointX, startPointY, endPointX, endPointY), pixels. The octave copies
+are ignored: the full-resolution endpoints are used whatever the octave. */
+CV_EXPORTS void keyLinesToLines(const std::vector<line_descriptor::KeyLine>& keylines, OutputArray lines);
+#endif // HAVE_OPENCV_LINE_DESCRIPTOR
+
+//! @} lsd_advance
+
+}} // namespace cv::ximgproc
+
+#endif

@@ -1,0 +1,12 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The names OpenCV's Python binding generator gives the nested types of LSDAdvance in the code
+// it writes (as ximgproc does for EdgeDrawing::Params). In-tree builds only.
+#ifdef HAVE_OPENCV_LSD_ADVANCE
+typedef cv::ximgproc::LSDAdvance::Params LSDAdvance_Params;
+typedef cv::ximgproc::LSDAdvance::LSDParams LSDAdvance_LSDParams;
+typedef cv::ximgproc::LSDAdvance::FLDParams LSDAdvance_FLDParams;
+typedef cv::ximgproc::LSDAdvance::Preset LSDAdvance_Preset;
+#endif
