@@ -190,6 +190,27 @@ def test_detect_equals_processSegments_of_opencv_lsd(building):
     assert np.array_equal(detector.processSegments(base, imageSize=size), lines)
 
 
+def test_computeLineResponses_is_length_times_squared_contrast_of_the_brighter_left():
+    # A step of 150 gray levels under a 120 px segment pointing up (bright side on its left).
+    step = np.full((200, 300), 50, np.uint8)
+    step[:, :150] = 200
+    up = np.array([[[149.5, 160, 149.5, 40]]], np.float32)
+    responses = api.computeLineResponses(step, up)
+    assert responses.shape == (1, 1) and responses.dtype == np.float32
+    assert responses[0, 0] == pytest.approx(120 / 300 * (150 / 255) ** 2, rel=1e-5)
+    assert api.computeLineResponses(step, up[:, :, [2, 3, 0, 1]])[0, 0] == 0
+    with pytest.raises(cv2.error):
+        api.computeLineResponses(np.zeros((0, 0), np.uint8), up)
+
+
+def test_keepStrongSegments_is_off_by_default_and_on_in_the_sequence_preset(building):
+    assert not api.createLSDAdvance().getKeepStrongSegments()
+    sequence = api.createLSDAdvance(api.LSDAdvance_PRESET_SEQUENCE)
+    assert sequence.getKeepStrongSegments()
+    assert len(sequence.detect(building)) > len(api.createLSDAdvance().detect(building))
+    assert sequence.getLastStats().minResponse > 0
+
+
 def test_gray_bgr_and_bgra_input_agree(building):
     detector = api.createLSDAdvance()
     gray = detector.detect(building)
@@ -648,6 +669,8 @@ def test_detectKeyLines_equals_linesToKeyLines_of_detect(small_building):
     expected = api.linesToKeyLines(lines, size)
     assert [(k.startPointX, k.startPointY, k.endPointX, k.endPointY, k.numOfPixels) for k in keylines] == \
         [(k.startPointX, k.startPointY, k.endPointX, k.endPointY, k.numOfPixels) for k in expected]
+    # response: computeLineResponses', not the length of linesToKeyLines
+    assert [k.response for k in keylines] == list(api.computeLineResponses(small_building, lines).ravel())
 
 
 @standalone_only

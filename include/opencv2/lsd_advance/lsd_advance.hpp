@@ -160,12 +160,7 @@ public:
         CV_PROP_RW int lengthFilterMode;        //!< stage 1, one of LengthFilterMode. Default LENGTH_FILTER_ADAPTIVE.
         CV_PROP_RW int lengthThresholdRule;     //!< stage 1, one of LengthThresholdRule. Default LENGTH_THRESHOLD_CAPPED.
         CV_PROP_RW double lengthThresholdScale; //!< factor on stage 1's threshold (below 1 keeps shorter segments), in (0, 10]. Default 1.
-        /** stage 1 also keeps a short segment whose response (computeLineResponses) reaches the
-        threshold the same rule gives on the responses of the frame's base segments: short lines
-        of high contrast, which LBD matches again in the next view. Costs the responses of the
-        base segments; processSegments() has no image and filters by length alone. Default false
-        (true in PRESET_SEQUENCE). */
-        CV_PROP_RW bool keepStrongSegments;
+        CV_PROP_RW bool keepStrongSegments;     //!< stage 1 also keeps a shorter segment whose response (computeLineResponses) reaches the same rule on the base segments' responses: short lines of high contrast, which LBD matches again; costs the responses (processSegments: by length alone; on in PRESET_SEQUENCE). Default false.
         CV_PROP_RW int stageOrder;              //!< one of StageOrder. Default MERGE_THEN_FILTER.
         CV_PROP_RW double angleBinWidth;        //!< stage 2's angle bins, degrees, in [1, 90]. Default 10.
         CV_PROP_RW int angleBinning;            //!< stage 2, one of AngleBinning. Default ANGLE_BINS_NEIGHBOURS.
