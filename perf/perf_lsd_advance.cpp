@@ -28,7 +28,8 @@ enum Method
     LSDA_ON_OPENCV_LSD_FULL,  // LSDAdvance on OpenCV's LSD with the default base's set-up (scale 1, no refinement)
     LSDA_ON_OPENCV_LSD,       // LSDAdvance on OpenCV's LSD with OpenCV's default set-up (the paper's base)
     LSDA_ON_FLD,              // LSDAdvance on FastLineDetector
-    LSDA_ON_EDLINES,          // LSDAdvance on EDLines (PRESET_FASTEST)
+    LSDA_FASTEST,             // LSDAdvance, PRESET_FASTEST
+    LSDA_ON_EDLINES,          // LSDAdvance on EDLines
     LSDA_ON_EDLINES_TUNED,    // LSDAdvance on EDLines, the sweep's best set-up (doc/performance.md)
     ELSED                     // the optional peer ELSED, defaults; a case only when it is built
 };
@@ -40,7 +41,7 @@ enum Method
 // Expands LSDA_PEER_METHODS before CV_ENUM turns the list into the printed case names.
 #define LSDA_METHOD_ENUM(...) CV_ENUM(__VA_ARGS__)
 LSDA_METHOD_ENUM(MethodType, LSD, FLD, EDLINES, LSDA, LSDA_BASE_ONLY, LSDA_ON_OPENCV_LSD_FULL, LSDA_ON_OPENCV_LSD,
-                 LSDA_ON_FLD, LSDA_ON_EDLINES, LSDA_ON_EDLINES_TUNED LSDA_PEER_METHODS)
+                 LSDA_ON_FLD, LSDA_FASTEST, LSDA_ON_EDLINES, LSDA_ON_EDLINES_TUNED LSDA_PEER_METHODS)
 
 typedef std::function<void(const Mat&, std::vector<Vec4f>&)> DetectFunction;
 
@@ -72,8 +73,9 @@ DetectFunction makeDetector(int method)
     }
 #endif
     Ptr<LSDAdvance> advance =
-        createLSDAdvance(method == LSDA_ON_EDLINES || method == LSDA_ON_EDLINES_TUNED ? LSDAdvance::PRESET_FASTEST
-                                                                                     : LSDAdvance::PRESET_MOST_ACCURATE);
+        createLSDAdvance(method == LSDA_FASTEST ? LSDAdvance::PRESET_FASTEST : LSDAdvance::PRESET_MOST_ACCURATE);
+    if (method == LSDA_ON_EDLINES || method == LSDA_ON_EDLINES_TUNED)
+        advance->setBaseDetector(LSDAdvance::BASE_EDLINES);
     if (method == LSDA_BASE_ONLY)
     {
         advance->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);

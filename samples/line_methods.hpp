@@ -72,7 +72,8 @@ inline const char* lineMethodNames()
 {
     return "lsd, fld, fld_merge, edlines, plvins, lsdadvance, lsdadvance_paper, lsdadvance_sequence, lsdadvance_filter, "
            "lsdadvance_base, lsdadvance_merge, lsdadvance_interframe, lsdadvance_continuous, lsdadvance_tracking, "
-           "lsdadvance_opencv_full, lsdadvance_opencv_lsd, lsdadvance_fld, lsdadvance_edlines, lsdadvance_edlines_tuned"
+           "lsdadvance_opencv_full, lsdadvance_opencv_lsd, lsdadvance_fastest, lsdadvance_fld, lsdadvance_edlines, "
+           "lsdadvance_edlines_tuned"
 #ifdef LSD_ADVANCE_HAVE_ELSED
            ", elsed"
 #endif
@@ -231,19 +232,21 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
         detector->setLSDParams(ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_PAPER)->getLSDParams());
         return lineMethodOf("LSDAdvance on OpenCV's default LSD", detector);
     }
+    if (name == "lsdadvance_fastest")
+        return lineMethodOf("LSDAdvance, fastest preset", ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_FASTEST));
     if (name == "lsdadvance_fld" || name == "lsdadvance_edlines")
     {
         const bool fld = name == "lsdadvance_fld";
-        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_FASTEST);
-        if (fld)
-            detector->setBaseDetector(ximgproc::LSDAdvance::BASE_FLD);
-        return lineMethodOf(fld ? "LSDAdvance on FLD" : "LSDAdvance on EDLines (fastest preset)", detector);
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(fld ? ximgproc::LSDAdvance::BASE_FLD : ximgproc::LSDAdvance::BASE_EDLINES);
+        return lineMethodOf(fld ? "LSDAdvance on FLD" : "LSDAdvance on EDLines", detector);
     }
     // EDLines without smoothing and a higher gradient threshold, the paper's length threshold and
     // a 2 px gate: the best of the sweep on the even YorkUrban images (doc/performance.md).
     if (name == "lsdadvance_edlines_tuned")
     {
-        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance(ximgproc::LSDAdvance::PRESET_FASTEST);
+        Ptr<ximgproc::LSDAdvance> detector = ximgproc::createLSDAdvance();
+        detector->setBaseDetector(ximgproc::LSDAdvance::BASE_EDLINES);
         ximgproc::EdgeDrawing::Params ed = detector->getEDLinesParams();
         ed.Sigma = 0.5f;
         ed.GradientThresholdValue = 30;

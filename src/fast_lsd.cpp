@@ -21,6 +21,7 @@
 #include "precomp.hpp"
 #include "fast_lsd.hpp"
 #include "opencv2/core/hal/hal.hpp"
+#include <functional>
 
 namespace cv {
 namespace ximgproc {
@@ -153,6 +154,8 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
     logNT = 5.0 * (std::log10((double)width) + std::log10((double)height)) / 2.0 + std::log10(11.0);
     // Fewer points than this cannot give a meaningful segment, whatever their alignment.
     const size_t minRegionSize = (size_t)(-logNT / std::log10(p));
+    // Once per frame: most seeds grow no region, and a cosine per seed cost 4 % of the time.
+    const float cosUnit = alignmentLimit(prec);
 
     const int seeds = (int)ordered.size();
     for (int i = 0; i < seeds; i++)
@@ -168,7 +171,7 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
         const int seed = ordered[i];
         if (!isFree(level[seed]))
             continue;
-        growRegion(seed, prec);
+        growRegion(seed, cosUnit);
         if ((size_t)regionSize < minRegionSize)
             continue;
         Rect rect;
@@ -331,9 +334,13 @@ void FastLsd::growRegionFrom(int seed, float cosUnit)
     regionSum = Point2f(sx, sy);
 }
 
-void FastLsd::growRegion(int seed, double tolerance)
+float FastLsd::alignmentLimit(double tolerance)
 {
-    const float cosUnit = (float)std::cos(tolerance) * kUnit;
+    return (float)std::cos(tolerance) * kUnit;
+}
+
+void FastLsd::growRegion(int seed, float cosUnit)
+{
     if (cosUnit > 0)
         growRegionFrom<true>(seed, cosUnit);
     else
@@ -433,7 +440,7 @@ bool FastLsd::refineRegion(Rect& rect)
     const double mean = sum / n;
     const double tau = 2.0 * std::sqrt(std::max(0.0, (sumSq - 2.0 * mean * sum) / n + mean * mean));
 
-    growRegion(seed, tau);
+    growRegion(seed, alignmentLimit(tau));
     if (regionSize < 2)
         return false;
     regionToRect(rect.prec, rect.p, rect);
@@ -547,52 +554,38 @@ double FastLsd::improveRect(Rect& rect) const
         }
     };
 
-    Rect r = rect;
-    for (int n = 0; n < 5; n++)
-    {
-        r.p /= 2;
-        r.prec = r.p * CV_PI;
-        tryVariation(r);
-    }
-    if (best > logEps)
-        return best;
-
-    r = rect;
-    for (int n = 0; n < 5; n++)
-        if (r.width - delta >= 0.5)
-        {
-            r.width -= delta;
-            tryVariation(r);
-        }
-    if (best > logEps)
-        return best;
-
-    for (const double side : { 1.0, -1.0 })
-    {
-        r = rect;
+    // Five steps of one variation from the best rectangle so far; the steps that narrow the
+    // rectangle, and the last phase, stop at the published minimal width. True when valid.
+    auto varyFromBest = [&](bool whileWide, const std::function<void(Rect&)>& step) {
+        Rect r = rect;
         for (int n = 0; n < 5; n++)
-            if (r.width - delta >= 0.5)
+            if (!whileWide || r.width - delta >= 0.5)
             {
-                const double ox = -r.dy * halfDelta * side, oy = r.dx * halfDelta * side;
-                r.x1 += ox;
-                r.y1 += oy;
-                r.x2 += ox;
-                r.y2 += oy;
-                r.width -= delta;
+                step(r);
                 tryVariation(r);
             }
-        if (best > logEps)
+        return best > logEps;
+    };
+    const auto finerPrecision = [](Rect& r) {
+        r.p /= 2;
+        r.prec = r.p * CV_PI;
+    };
+    if (varyFromBest(false, finerPrecision) || varyFromBest(true, [](Rect& r) { r.width -= delta; }))
+        return best;
+    for (const double side : { 1.0, -1.0 })
+    {
+        const auto moveSideIn = [side](Rect& r) {
+            const double ox = -r.dy * halfDelta * side, oy = r.dx * halfDelta * side;
+            r.x1 += ox;
+            r.y1 += oy;
+            r.x2 += ox;
+            r.y2 += oy;
+            r.width -= delta;
+        };
+        if (varyFromBest(true, moveSideIn))
             return best;
     }
-
-    r = rect;
-    for (int n = 0; n < 5; n++)
-        if (r.width - delta >= 0.5)
-        {
-            r.p /= 2;
-            r.prec = r.p * CV_PI;
-            tryVariation(r);
-        }
+    varyFromBest(true, finerPrecision);
     return best;
 }
 

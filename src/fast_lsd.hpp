@@ -39,7 +39,9 @@ private:
     class GradientRows;
     void computeGradient(const Mat& image);
     void orderPixels();
-    void growRegion(int seed, double tolerance);
+    //! cos(tolerance) in the scale of the level-line vectors: growRegion's argument.
+    static float alignmentLimit(double tolerance);
+    void growRegion(int seed, float cosUnit);
     template <bool acute> void growRegionFrom(int seed, float cosUnit);
     void regionToRect(double prec, double p, Rect& rect);
     bool refineRegion(Rect& rect);

@@ -26,7 +26,8 @@ double elapsedMs(int64 since)
 }
 
 // The preset's parameters: the defaults (the tables of parameters.hpp), then what the preset
-// changes. The most accurate configuration is the defaults; the fastest is the base named here.
+// changes. The most accurate configuration is the defaults; the fastest is the default base at
+// OpenCV LSD's scale 0.8 (the fastest measured set-up whose F stays above LSD's, doc/performance.md).
 lsda::Parameters presetParameters(int preset)
 {
     lsda::Parameters p;
@@ -35,7 +36,7 @@ lsda::Parameters presetParameters(int preset)
     case LSDAdvance::PRESET_MOST_ACCURATE:
         break;
     case LSDAdvance::PRESET_FASTEST:
-        p.own.baseDetector = LSDAdvance::BASE_EDLINES;
+        p.lsd.scale = 0.8;
         break;
     case LSDAdvance::PRESET_PAPER:
         // OpenCV's LSD with its own set-up (createLineSegmentDetector's defaults), the paper's base.

@@ -120,8 +120,13 @@ TEST(LSDAdvance_Parameters, presets_are_the_documented_configurations)
     EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, accurate->getLengthFilterMode());
     EXPECT_FALSE(accurate->getKeepStrongSegments());
 
-    EXPECT_EQ(LSDAdvance::BASE_EDLINES, createLSDAdvance(LSDAdvance::PRESET_FASTEST)->getBaseDetector());
-    EXPECT_FALSE(createLSDAdvance(LSDAdvance::PRESET_FASTEST)->getKeepStrongSegments());
+    // The fastest: the defaults, the base at OpenCV LSD's scale.
+    const Ptr<LSDAdvance> fastest = createLSDAdvance(LSDAdvance::PRESET_FASTEST);
+    LSDAdvance::LSDParams fastestLsd = fastest->getLSDParams();
+    EXPECT_EQ(0.8, fastestLsd.scale);
+    fastestLsd.scale = LSDAdvance::LSDParams().scale;
+    fastest->setLSDParams(fastestLsd);
+    expectSameParameters(*createLSDAdvance(), *fastest);
     const Ptr<LSDAdvance> sequence = createLSDAdvance(LSDAdvance::PRESET_SEQUENCE);
     EXPECT_EQ(LSDAdvance::LENGTH_FILTER_COUNT_TRACKING, sequence->getLengthFilterMode());
     EXPECT_TRUE(sequence->getKeepStrongSegments());

@@ -143,7 +143,7 @@ public:
     enum Preset
     {
         PRESET_MOST_ACCURATE = 0, //!< the defaults: the highest F on YorkUrban
-        PRESET_FASTEST = 1,       //!< the default stages on the fastest base, BASE_EDLINES
+        PRESET_FASTEST = 1,       //!< the defaults with the base at LSDParams::scale 0.8 (OpenCV LSD's scale)
         /** the paper's: OpenCV's LSD set-up (LSD_REFINE_STD, scale 0.8), LENGTH_THRESHOLD_PAPER,
         LENGTH_FILTER_INTERFRAME, FILTER_THEN_MERGE, MERGE_BASELINES, proximityRatio 0.1 */
         PRESET_PAPER = 2,
