@@ -349,7 +349,8 @@ def test_every_saved_parameter_has_a_getter_and_a_setter():
 
 
 def test_createLSDAdvance_takes_a_preset():
-    assert api.createLSDAdvance(api.LSDAdvance_PRESET_FASTEST).getBaseDetector() == api.LSDAdvance_BASE_EDLINES
+    fastest = api.createLSDAdvance(api.LSDAdvance_PRESET_FASTEST)
+    assert fastest.getBaseDetector() == api.LSDAdvance_BASE_FAST_LSD and fastest.getLSDParams().scale == 0.8
     paper = api.createLSDAdvance(preset=api.LSDAdvance_PRESET_PAPER)
     assert paper.getLSDParams().refine == cv2.LSD_REFINE_STD and paper.getLSDParams().scale == 0.8
     assert paper.getMergeStrategy() == api.LSDAdvance_MERGE_BASELINES
