@@ -147,9 +147,7 @@ public:
         /** the paper's: OpenCV's LSD set-up (LSD_REFINE_STD, scale 0.8), LENGTH_THRESHOLD_PAPER,
         LENGTH_FILTER_INTERFRAME, FILTER_THEN_MERGE, MERGE_BASELINES, proximityRatio 0.1 */
         PRESET_PAPER = 2,
-        /** video, SLAM: PRESET_MOST_ACCURATE with LENGTH_FILTER_COUNT_TRACKING (steadiest count)
-        and keepStrongSegments (more correct LBD matches at an equal line budget, doc/matching.md) */
-        PRESET_SEQUENCE = 3
+        PRESET_SEQUENCE = 3 //!< video, SLAM: PRESET_MOST_ACCURATE with LENGTH_FILTER_COUNT_TRACKING and keepStrongSegments
     };
 
     /** @brief LSDAdvance's own parameters (those of stages 1-3 and the choice of base). */
