@@ -571,25 +571,27 @@ int run(const CommandLine& args)
         throw std::runtime_error("--dataset=homography needs OpenCV's line_descriptor module, absent from this build");
 #endif
     setNumThreads(args.integer("threads", 1, 1024));
-    const bool onePair = dataset == "homography" && data.empty();
-    if (onePair && (!args.has("image1") || !args.has("image2") || !args.has("homography")))
-        throw std::runtime_error("--dataset=homography needs --data=<HPatches folder>, or --image1, --image2 and "
-                                 "--homography");
-    if (!onePair && data.empty())
-        throw std::runtime_error("--data=<folder> is required for --dataset=" + dataset + ": " +
-                                 (dataset == "yorkurban" ? "YorkUrban-LineSegment (images/, gt/, list.txt)"
-                                                         : "a sequence (image_l/, cam0/data/ or images)"));
-    if (!data.empty() && !utils::fs::isDirectory(data))
-        throw std::runtime_error("--data=" + data + ": no such folder");
-    checkOutputFolder("csv", csv);
-    checkOutputFolder("chart", chartPrefix);
-
+    // Every option is checked before the first error is reported on the data.
     const FileStorage params = openParamsFile(args.text("params"));
     std::vector<LineMethod> methods;
     for (const std::string& name : splitList(args.text("methods")))
         methods.push_back(makeLineMethod(name, params.isOpened() && name == "lsdadvance" ? params.root() : FileNode()));
     if (methods.empty())
         throw std::runtime_error("--methods is empty; known: " + std::string(lineMethodNames()));
+    checkOutputFolder("csv", csv);
+    checkOutputFolder("chart", chartPrefix);
+
+    const bool onePair = dataset == "homography" && data.empty();
+    if (onePair && (!args.has("image1") || !args.has("image2") || !args.has("homography")))
+        throw std::runtime_error("--dataset=homography needs --data=<HPatches folder>, or --image1, --image2 and "
+                                 "--homography");
+    const std::string expectedData = dataset == "yorkurban" ? "YorkUrban-LineSegment (images/, gt/, list.txt)"
+                                     : dataset == "sequence" ? "a sequence (image_l/, cam0/data/ or images)"
+                                                             : "an HPatches folder (1.ppm ... 6.ppm, H_1_2 ... H_1_6)";
+    if (!onePair && data.empty())
+        throw std::runtime_error("--data=<folder> is required for --dataset=" + dataset + ": " + expectedData);
+    if (!data.empty() && !utils::fs::isDirectory(data))
+        throw std::runtime_error("--data=" + data + ": no such folder; expected " + expectedData);
 
     Table table;
     std::string runInfo;  // the charts' subtitle

@@ -151,7 +151,8 @@ CPP_ERRORS = {
     ],
     "lsd_advance_benchmark": [
         ([], ["--data"]),
-        (["--data={files}/missing"], ["missing", "no such folder"]),
+        (["--data={files}/missing"], ["missing", "no such folder", "expected YorkUrban-LineSegment (images/, gt/"]),
+        (["--methods=lsd,foo"], ["unknown method 'foo'"]),
         (["--data={files}/empty_folder"], ["empty_folder"]),
         (["--data={files}/empty_folder", "--dataset=sequence"], ["empty_folder"]),
         (["--data={files}/empty_folder", "--methods=lsd,foo"], ["foo"]),
