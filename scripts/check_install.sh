@@ -18,7 +18,8 @@
 #      RPATH, loads the installed library, and detects as many segments as the consumer;
 #   5. consumers see the KeyLine API (HAVE_OPENCV_LINE_DESCRIPTOR) exactly when the library has it;
 #   6. when the build has the Python module (LSD_ADVANCE_PYTHON=ON), the installed `lsd_advance`
-#      imports from <prefix> (PYTHONPATH) and detects as many segments as the consumer;
+#      imports from <prefix> (PYTHONPATH) and detects as many segments as the consumer, as KeyLines
+#      that cv2's LBD describes;
 #   7. README "Another prefix": in a clean shell (env -i, PATH=/usr/local/bin:/usr/bin:/bin) that
 #      sources only <prefix>/bin/setup_vars_lsd_advance.sh, the commands of README and the
 #      tutorial run as written: the sample program by name, pkg-config and a program built with
@@ -168,14 +169,21 @@ if [ "$(cache_value LSD_ADVANCE_PYTHON)" = "ON" ]; then
   PYTHON="$(cache_value Python3_EXECUTABLE)"
   PYDIR="$PREFIX/$(cache_value LSD_ADVANCE_PYTHON_INSTALL_DIR)"
   [ -f "$PYDIR/lsd_advance/__init__.py" ] || fail "the Python package is not installed in $PYDIR/lsd_advance"
+  # Its KeyLines are cv2's own: they go into cv2's LBD as they come.
   out="$(cd "$WORK" && env -u LD_LIBRARY_PATH PYTHONPATH="$PYDIR" "$PYTHON" -c '
 import sys, cv2, lsd_advance
-lines = lsd_advance.createLSDAdvance().detect(cv2.imread(sys.argv[1], cv2.IMREAD_GRAYSCALE))
-print(0 if lines is None else len(lines), "line segments, from", lsd_advance.__file__)' "$IMAGE")" \
+gray = cv2.imread(sys.argv[1], cv2.IMREAD_GRAYSCALE)
+lines = lsd_advance.createLSDAdvance().detect(gray)
+keylines = lsd_advance.createLSDAdvance().detectKeyLines(gray)
+described = cv2.line_descriptor.BinaryDescriptor_createBinaryDescriptor().compute(gray, keylines)[1]
+print(0 if lines is None else len(lines), "line segments, from", lsd_advance.__file__)
+print("KeyLines described by LBD:", len(keylines), described.shape[0])' "$IMAGE")" \
     || fail "importing the installed lsd_advance with $PYTHON (PYTHONPATH=$PYDIR) failed: $out"
   echo "$out"
   [[ "$out" == *"from $PYDIR/lsd_advance/"* ]] || fail "Python imported lsd_advance from elsewhere than $PYDIR: $out"
   [ "$(count_in "$out" "")" = "$cmake_count" ] || fail "the Python module reports '$out', the C++ consumer $cmake_count segments"
+  [ "$(sed -n 's/^KeyLines described by LBD: //p' <<<"$out")" = "$cmake_count $cmake_count" ] \
+    || fail "the Python module's KeyLines are not all described by cv2's LBD: $out"
 else
   echo "LSD_ADVANCE_PYTHON is not ON in $BUILD: no Python module to check"
 fi

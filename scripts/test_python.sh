@@ -5,11 +5,12 @@
 #
 # Usage: bash scripts/test_python.sh <build dir>
 #
-# Runs the Python tests (python/test, pytest) on the module of a standalone build
-# (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), comparing with the build's C++ samples,
-# and the tests of the sample programs (samples/test: error paths, folder runs and drawings of
-# the C++ and Python samples). Prints `python tests: N passed, M failed` last (both folders);
-# exits non-zero when a test fails or errors.
+# Runs the Python tests of the bindings (misc/python/test, where OpenCV's own runner finds them
+# in-tree; OpenCV's tests_common from the build's OpenCV source tree) and the tests of the sample
+# programs (samples/test: error paths, folder runs and drawings of the C++ and Python samples),
+# with pytest, on the module of a standalone build (<build>/python/lsd_advance,
+# LSD_ADVANCE_PYTHON=ON). Prints `python tests: N passed, M failed` last (both folders); exits
+# non-zero when a test fails or errors.
 #
 # Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
 # OpenCV build dir of an in-tree build, whose cv2 the caller puts on PYTHONPATH (and
@@ -30,8 +31,20 @@ if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ] && \
   exit 1
 fi
 
+# OpenCV's tests_common (NewOpenCVTests): from the standalone build's OPENCV_SOURCE_DIR, or from
+# the source tree of the OpenCV build.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$BUILD/CMakeCache.txt"; }
+OPENCV_TREE="$(cache_value OPENCV_SOURCE_DIR)"
+[ -n "$OPENCV_TREE" ] || OPENCV_TREE="$(cache_value CMAKE_HOME_DIRECTORY)"
+if [ ! -f "$OPENCV_TREE/modules/python/test/tests_common.py" ]; then
+  echo "ERROR: no OpenCV source tree with modules/python/test/tests_common.py for $BUILD ('$OPENCV_TREE')" >&2
+  echo "python tests: 0 passed, 1 failed"
+  exit 1
+fi
+export PYTHONPATH="$OPENCV_TREE/modules/python/test${PYTHONPATH:+:$PYTHONPATH}"
+
 if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ]; then
-  export PYTHONPATH="$BUILD/python${PYTHONPATH:+:$PYTHONPATH}"
+  export PYTHONPATH="$BUILD/python:$PYTHONPATH"
   SAMPLE_PREFIX="$BUILD/"
 else
   SAMPLE_PREFIX="$BUILD/bin/example_lsd_advance_"  # an OpenCV build dir
@@ -46,7 +59,7 @@ REPORT="$(mktemp)"
 trap 'rm -f "$REPORT"' EXIT
 rc=0
 # -p no:cacheprovider: write nothing into the source tree.
-"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/python/test" "$REPO/samples/test" || rc=$?
+"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/misc/python/test" "$REPO/samples/test" || rc=$?
 
 read -r passed failed < <("$PYTHON" - "$REPORT" <<'PY'
 import sys
