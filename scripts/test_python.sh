@@ -8,8 +8,8 @@
 # Runs the Python tests (python/test, pytest) on the module of a standalone build
 # (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), comparing with the build's C++ programs,
 # the tests of the programs (apps/lsd_advance_bench/test: the apps' error paths and folder runs,
-# their method files, the C++ and Python samples). Prints `python tests: N passed, M failed` last
-# (all folders);
+# their method files, the C++ and Python samples) and of the documentation's figure check
+# (scripts/test/). Prints `python tests: N passed, M failed` last (all folders);
 # exits non-zero when a test fails or errors.
 #
 # Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
@@ -24,7 +24,7 @@ REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="$(cd "${1:?usage: test_python.sh <build dir>}" && pwd)"
 PYTHON=/usr/bin/python3  # Debian's, with python3-opencv, python3-numpy and python3-pytest
 
-if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ] &&
+if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ] && \
    ! ls "$BUILD"/python/lsd_advance/_lsd_advance*.so >/dev/null 2>&1; then
   echo "ERROR: no Python module in $BUILD/python/lsd_advance (configure with -DLSD_ADVANCE_PYTHON=ON and build)" >&2
   echo "python tests: 0 passed, 1 failed"
@@ -48,7 +48,7 @@ trap 'rm -f "$REPORT"' EXIT
 rc=0
 # -p no:cacheprovider: write nothing into the source tree.
 "$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/python/test" \
-  "$REPO/apps/lsd_advance_bench/test" || rc=$?
+  "$REPO/apps/lsd_advance_bench/test" "$REPO/scripts/test" || rc=$?
 
 read -r passed failed < <("$PYTHON" - "$REPORT" <<'PY'
 import sys
