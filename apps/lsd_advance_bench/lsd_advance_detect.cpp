@@ -64,7 +64,7 @@ public:
             singleImage_ = true;
         }
         // A file named as an image (OpenCV would write one under this name) is not tried as a
-        // video: the video backends would only add their own messages to the sample's error.
+        // video: the video backends would only add their own messages to the app's error.
         else if (exists && haveImageWriter(path))
             throw std::runtime_error("cannot read " + path + " as an image");
         // Streams and image-sequence patterns do not exist as files; anything else missing is
@@ -73,7 +73,7 @@ public:
             throw std::runtime_error("no such image, folder or video: " + path);
         else
         {
-            // The backends that cannot open the file log why; the sample's error says it once.
+            // The backends that cannot open the file log why; the app's error says it once.
             const utils::logging::LogLevel logLevel =
                 utils::logging::setLogLevel(utils::logging::LOG_LEVEL_FATAL);
             const bool opened = video_.open(path);

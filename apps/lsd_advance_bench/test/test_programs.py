@@ -362,8 +362,8 @@ def test_lbd_drawing_colours_correct_matches_green_and_wrong_ones_red(tmp_path):
 
 def test_video_sample_runs_one_detector_over_the_frames(tmp_path):
     result = run("lsd_advance_video", ["vtest.avi", "--frames=12", "--output=last.png"], tmp_path)
-    if result.returncode != 0 and "as a video" in result.stderr:
-        unavailable("this OpenCV cannot read vtest.avi")
+    if result.returncode != 0 and "as a video" in result.stderr and not STANDALONE:
+        pytest.skip("this OpenCV build has no video backend for vtest.avi (the in-tree check builds none)")
     printed = succeeded(result)
     assert re.search(r"^frames: 12, segments per frame: [0-9.]+ mean", printed, re.M)
     assert re.search(r"^frame 0: \d+ segments, length threshold [0-9.]+ px \(alpha 1.00\)", printed, re.M)
