@@ -14,7 +14,8 @@ of an integer do not count: 0.229, 1564, 3.7, 98 and 0.25x are figures; 0.5, 60,
 not), written in prose, a heading, a table cell, a comment of a code block or a block of program
 output (a fenced block without a language). It must appear in doc/results.md exactly as
 written: 0.23 where the page says 0.229 is drift. Not figures: the commands and code of a
-fenced block with a language and `inline code` (parameters, options), digits inside a name
+fenced block with a language and `inline code` (parameters, options: write a parameter's value
+as code, `maxPerpendicularOffset` `1.5`), digits inside a name
 (graf1, H1to3p, x86_64, P1020831.jpg, 640x480), versions with two dots (4.6.0), link targets
 and HTML comments, and the few numbers of ALLOWED, each with its reason.
 """
@@ -29,7 +30,8 @@ ALLOWED = [
     (r"\b(?:19[5-9]\d|20[0-4]\d)\b", "years (publications, data sets)"),
     (r"\b(?:OpenCV|opencv) 4\.\d+\b", "OpenCV versions"),
     (r"\bDebian 1[23]\b", "Debian releases"),
-    (r"\bissues? \d+\b", "issue numbers"),
+    (r"\bissues? \d+\b|#\d+\b", "issue and pull-request numbers"),
+    (r"\b\d+-bit\b|/ 255\b|\b256 bits\b", "data formats: bit widths, 8-bit gray levels, LBD's 256-bit descriptor"),
 ]
 # A number, with an optional unit, as a whole word; a word with other letters is a name.
 NUMBER = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)(?:x|px|ms|kB|MB|GB|M|k|s|°)?(?![\w.]*\w)")

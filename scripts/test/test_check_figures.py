@@ -73,7 +73,8 @@ def test_inline_code_link_targets_comments_names_and_versions_are_not_figures(tm
 
 
 def test_allowed_numbers_are_years_versions_and_references(tmp_path):
-    page = "Guan et al., *Electronics* 2026, 15, 1006; OpenCV 4.10 on Debian 13 (issue 22), from 2012.\n"
+    page = ("Guan et al., *Electronics* 2026, 15, 1006; OpenCV 4.10 on Debian 13 (issue 22, opencv/opencv#23210), "
+            "from 2012; 16-bit vectors, contrast / 255, LBD's 256 bits.\n")
     assert check(tmp_path, page) == (0, [])
 
 
