@@ -8,7 +8,7 @@
 # Checks the install of a configured and built standalone build (default: $LSD_ADVANCE_BUILD_DIR,
 # else <repo>/build, as scripts/test.sh leaves it) as a user would use it:
 #   1. `cmake --install <build> --prefix <fresh temp prefix>`; the header tree, library, CMake
-#      package and pkg-config file are where README says, and no test, perf test, ts or fuzzer
+#      package and pkg-config file are where doc/building.md says, and no test, perf test, ts or fuzzer
 #      is installed;
 #   2. the consumer project scripts/install_consumer (a copy) configured with
 #      CMAKE_PREFIX_PATH=<prefix> only, built, and run on OpenCV's building.jpg: it must report a
@@ -20,13 +20,13 @@
 #   5. consumers see the KeyLine API (HAVE_OPENCV_LINE_DESCRIPTOR) exactly when the library has it;
 #   6. when the build has the Python module (LSD_ADVANCE_PYTHON=ON), the installed `lsd_advance`
 #      imports from <prefix> (PYTHONPATH) and detects as many segments as the consumer;
-#   7. README "Another prefix": in a clean shell (env -i, PATH=/usr/local/bin:/usr/bin:/bin) that
-#      sources only <prefix>/bin/setup_vars_lsd_advance.sh, the commands of README and the
+#   7. doc/building.md "Another prefix": in a clean shell (env -i, PATH=/usr/local/bin:/usr/bin:/bin) that
+#      sources only <prefix>/bin/setup_vars_lsd_advance.sh, the commands of doc/building.md and the
 #      tutorial run as written: the sample program by name, pkg-config and a program built with
 #      its flags (no rpath), the consumer configured without -DCMAKE_PREFIX_PATH, `python3`
 #      importing lsd_advance, and the installed Python detect sample; all from <prefix>, all
 #      with the consumer's segment count.
-# The consumer is not installed: it is this check's project, a user's to copy (README).
+# The consumer is not installed: it is this check's project, a user's to copy (doc/building.md).
 # Exits non-zero with an `ERROR:` line on the first failure; the temp prefix is removed on success
 # and kept (path printed) on failure.
 #
@@ -180,7 +180,7 @@ else
   echo "LSD_ADVANCE_PYTHON is not ON in $BUILD: no Python module to check"
 fi
 
-step "README \"Another prefix\": a clean shell with only $PREFIX/bin/setup_vars_lsd_advance.sh sourced"
+step "doc/building.md \"Another prefix\": a clean shell with only $PREFIX/bin/setup_vars_lsd_advance.sh sourced"
 BINDIR="$(cache_value CMAKE_INSTALL_BINDIR)"
 WITH_SAMPLES="$(cache_value BUILD_EXAMPLES)"
 WITH_PYTHON="$(cache_value LSD_ADVANCE_PYTHON)"
@@ -212,7 +212,7 @@ if [ "$with_python" = ON ]; then
     | sed -n "s/^\([0-9]*\) line segments in building.jpg.*/python sample segments: \1/p"
 fi
 ' check_env "$SETUP" "$PREFIX" "$WITH_SAMPLES" "$WITH_PYTHON" 2>&1)" \
-  || fail "the commands of README \"Another prefix\" failed in a clean shell:"$'\n'"$out"
+  || fail "the commands of doc/building.md \"Another prefix\" failed in a clean shell:"$'\n'"$out"
 echo "$out"
 expect_line() { grep -qxF -- "$1" <<<"$out" || fail "expected the line '$1' in a clean shell with $SETUP sourced; got:"$'\n'"$out"; }
 expect_line "pkg-config: $pc_version from $PREFIX"
