@@ -60,7 +60,7 @@ CHARTS="$WORK/results_yorkurban"
 # Markdown for the page on stdout; commands and progress on stderr.
 section() { printf '\n## %s\n\n' "$1"; }
 run() { echo "+ ${*/#$REPO\//}" >&2; "$@"; }
-output() { echo '```'; run "$@"; echo '```'; }
+output() { echo '```'; run "$@" | grep -v '^wrote '; echo '```'; }
 
 opencv_dir="$(sed -n 's/^OpenCV_DIR:[A-Z]*=//p' "$BUILD/CMakeCache.txt")"
 opencv_version="$(sed -n 's/.*set(OpenCV_VERSION \([0-9.]*\)).*/\1/p' "$opencv_dir/OpenCVConfig-version.cmake")"
@@ -89,9 +89,9 @@ fi
   echo "divided by OpenCV LSD's on the same image), never across tables or runs. Every other column"
   echo "is the same on any machine. YorkUrban is scored with SPEC.md's structural protocol (detections"
   echo "shifted by +0.5 px; AP and AR are means over images, F = 2 AP AR / (AP + AR)); \"long share\""
-  echo "is the share of segments of 60 px or more; the matching columns follow doc/matching.md. The"
-  echo "methods are those of apps/lsd_advance_bench/line_methods.hpp, LSDAdvance's variants the files"
-  echo "apps/lsd_advance_bench/methods/<name>.yml (their titles are the rows' names)."
+  echo "is the share of segments of 60 px or more; the matching columns follow [matching.md](matching.md)."
+  echo "The methods are those of \`apps/lsd_advance_bench/line_methods.hpp\`, LSDAdvance's variants the"
+  echo "files \`apps/lsd_advance_bench/methods/<name>.yml\` (their titles are the rows' names)."
 
   section "YorkUrban-LineSegment, all 51 images"
   run "$B" --dataset=yorkurban --data="$DATA/yorkurban" --methods="$STILL" --repeats=3 --chart="$CHARTS"
