@@ -18,8 +18,8 @@
 # DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository. Builds
 # (or brings up to date) the programs first. With ELSED's sources beside the repository
 # (../shared/peers/elsed) or in LSD_ADVANCE_ELSED_DIR, ELSED is built as an optional peer and
-# measured in every table. Takes about 30 minutes; the page is replaced only when every step
-# succeeded.
+# measured in every table. Takes a few minutes on an idle 2-core machine, longer on a busy one;
+# the page is replaced only when every step succeeded.
 #
 # Environment:
 #   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)
