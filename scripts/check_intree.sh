@@ -54,7 +54,7 @@ echo "OpenCV source: $OPENCV_SOURCE_DIR"
 # build system rebuilds exactly what changed; files gone from the checkout are removed.
 MODDIR="$SCRATCH/modules/lsd_advance"
 mkdir -p "$MODDIR"
-MODULE_ENTRIES=(CMakeLists.txt cmake include misc src test perf samples doc)
+MODULE_ENTRIES=(CMakeLists.txt cmake include misc src test perf samples apps doc)
 ( cd "$MODDIR" && find . -type f ) | while IFS= read -r f; do
   [ -f "$REPO/$f" ] || rm -f "$MODDIR/$f"
 done

@@ -5,12 +5,13 @@
 #
 # Usage: bash scripts/test_python.sh <build dir>
 #
-# Runs the Python tests of the bindings (misc/python/test, where OpenCV's own runner finds them
-# in-tree; OpenCV's tests_common from the build's OpenCV source tree) and the tests of the sample
-# programs (samples/test: error paths, folder runs and drawings of the C++ and Python samples),
-# with pytest, on the module of a standalone build (<build>/python/lsd_advance,
-# LSD_ADVANCE_PYTHON=ON). Prints `python tests: N passed, M failed` last (both folders); exits
-# non-zero when a test fails or errors.
+# Runs, with pytest, the Python tests of the bindings (misc/python/test, where OpenCV's own runner
+# finds them in-tree; OpenCV's tests_common from the build's OpenCV source tree) on the module of a
+# standalone build (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), the tests of the programs
+# (apps/lsd_advance_bench/test: the apps' error paths and folder runs, their method files, the C++
+# and Python samples) and of the documentation's figure check (scripts/test/). Prints
+# `python tests: N passed, M failed` last (all folders); exits non-zero when a test fails or
+# errors.
 #
 # Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
 # OpenCV build dir of an in-tree build, whose cv2 the caller puts on PYTHONPATH (and
@@ -59,7 +60,8 @@ REPORT="$(mktemp)"
 trap 'rm -f "$REPORT"' EXIT
 rc=0
 # -p no:cacheprovider: write nothing into the source tree.
-"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/misc/python/test" "$REPO/samples/test" || rc=$?
+"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/misc/python/test" \
+  "$REPO/apps/lsd_advance_bench/test" "$REPO/scripts/test" || rc=$?
 
 read -r passed failed < <("$PYTHON" - "$REPORT" <<'PY'
 import sys
