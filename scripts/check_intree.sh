@@ -10,7 +10,7 @@
 # modules are built, then runs the in-tree opencv_test_lsd_advance, imports the Python bindings
 # and runs the Python tests of misc/python/test on that cv2: with OpenCV's own runner
 # (modules/python/test/test.py, which finds them through opencv_python_tests.cfg), then with the
-# sample programs' tests (scripts/test_python.sh). With the standalone build and tests on
+# tests of the samples and scripts (scripts/test_python.sh). With the standalone build and tests on
 # Debian 12's OpenCV 4.6 (scripts/test.sh), both ends of the supported versions are tested.
 # Fetching the source changes nothing in the system's apt set-up (scripts/fetch_opencv_source.sh
 # --suite: a private apt state with trixie's source index only).
@@ -161,7 +161,7 @@ if [ "$WITH_PYTHON" = 1 ]; then
     exit 1
   fi
 
-  section "Python tests with the sample programs' on the in-tree cv2 (scripts/test_python.sh, LSD_ADVANCE_PY_BACKEND=cv2)"
+  section "Python tests, with those of the samples and scripts, on the in-tree cv2 (scripts/test_python.sh, LSD_ADVANCE_PY_BACKEND=cv2)"
   LSD_ADVANCE_PY_BACKEND=cv2 PYTHONPATH="$BUILD/python_loader" LD_LIBRARY_PATH="$BUILD/lib" \
     bash "$REPO/scripts/test_python.sh" "$BUILD"
 fi

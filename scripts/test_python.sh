@@ -15,10 +15,10 @@
 #
 # Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
 # OpenCV build dir of an in-tree build, whose cv2 the caller puts on PYTHONPATH (and
-# LD_LIBRARY_PATH) and whose bin/example_lsd_advance_* samples are compared with;
-# LSD_ADVANCE_SAMPLE_PREFIX (the C++ samples' path without their name), LSD_ADVANCE_DETECT_SAMPLE /
-# LSD_ADVANCE_LBD_SAMPLE override the samples; OPENCV_SAMPLES_DATA_PATH (default: Debian's opencv-doc data);
-# CI=true makes missing data or samples fail instead of skip.
+# LD_LIBRARY_PATH) and whose bin/example_lsd_advance_* samples are run (the apps are built
+# standalone only: their tests skip); LSD_ADVANCE_SAMPLE_PREFIX (the C++ programs' path without
+# their name) overrides where the programs are; OPENCV_SAMPLES_DATA_PATH (default: Debian's
+# opencv-doc data); CI=true makes missing data or programs fail instead of skip.
 set -euo pipefail
 
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -52,8 +52,6 @@ else
 fi
 export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
 export LSD_ADVANCE_SAMPLE_PREFIX="${LSD_ADVANCE_SAMPLE_PREFIX:-$SAMPLE_PREFIX}"
-export LSD_ADVANCE_DETECT_SAMPLE="${LSD_ADVANCE_DETECT_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_detect}"
-export LSD_ADVANCE_LBD_SAMPLE="${LSD_ADVANCE_LBD_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_lbd_matching}"
 export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in the source tree
 
 REPORT="$(mktemp)"

@@ -335,8 +335,6 @@ def lbd_counts(printed):
 
 
 def test_lbd_matching_in_python_counts_what_the_cpp_sample_counts(tmp_path):
-    if not hasattr(api, "linesToKeyLines"):
-        pytest.skip("this build's Python bindings have no linesToKeyLines")
     args = ["graf1.png", "graf3.png", "--homography=H1to3p.xml"]
     cpp = lbd_counts(succeeded(run("lsd_advance_lbd_matching", args, tmp_path)))
     python = lbd_counts(succeeded(run("lsd_advance_lbd_matching.py", args, tmp_path)))
