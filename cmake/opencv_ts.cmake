@@ -5,70 +5,16 @@
 # OpenCV's test framework `ts` is not installed by distributions. Build it as a static library
 # (target lsda_opencv_ts) from an OpenCV source tree of the same version as the installed OpenCV.
 #
-# Source tree lookup order:
-#   1. -DOPENCV_SOURCE_DIR=<tree>
-#   2. environment variable OPENCV_SOURCE_DIR
-#   3. ${XDG_CACHE_HOME:-$HOME/.cache}/lsd_advance/opencv-<OpenCV_VERSION> (default of
-#      scripts/fetch_opencv_source.sh); fetched there at configure time when missing.
+# Source tree: cmake/opencv_source.cmake, fetched when missing.
 
-if(DEFINED ENV{XDG_CACHE_HOME} AND NOT "$ENV{XDG_CACHE_HOME}" STREQUAL "")
-  set(_lsda_cache_root "$ENV{XDG_CACHE_HOME}")
-else()
-  set(_lsda_cache_root "$ENV{HOME}/.cache")
-endif()
-set(LSDA_DEFAULT_OPENCV_SOURCE_DIR "${_lsda_cache_root}/lsd_advance/opencv-${OpenCV_VERSION}")
-
-set(_lsda_hint "Pass -DOPENCV_SOURCE_DIR=<OpenCV ${OpenCV_VERSION} source tree> or -DBUILD_TESTS=OFF.")
-
-function(_lsda_source_version dir out_var)
-  set(_hdr "${dir}/modules/core/include/opencv2/core/version.hpp")
-  if(NOT EXISTS "${_hdr}")
-    set(${out_var} "" PARENT_SCOPE)
-    return()
-  endif()
-  file(STRINGS "${_hdr}" _lines REGEX "^#define[ \t]+CV_VERSION_(MAJOR|MINOR|REVISION)[ \t]+[0-9]+")
-  foreach(_part MAJOR MINOR REVISION)
-    string(REGEX REPLACE ".*#define[ \t]+CV_VERSION_${_part}[ \t]+([0-9]+).*" "\\1" _v_${_part} "${_lines}")
-  endforeach()
-  set(${out_var} "${_v_MAJOR}.${_v_MINOR}.${_v_REVISION}" PARENT_SCOPE)
-endfunction()
-
-if(NOT OPENCV_SOURCE_DIR AND NOT "$ENV{OPENCV_SOURCE_DIR}" STREQUAL "")
-  set(OPENCV_SOURCE_DIR "$ENV{OPENCV_SOURCE_DIR}")
-endif()
-
-if(NOT OPENCV_SOURCE_DIR)
-  _lsda_source_version("${LSDA_DEFAULT_OPENCV_SOURCE_DIR}" _v)
-  if(NOT _v STREQUAL OpenCV_VERSION)
-    message(STATUS "lsd_advance: no OpenCV ${OpenCV_VERSION} source tree at ${LSDA_DEFAULT_OPENCV_SOURCE_DIR}; "
-                   "fetching it with scripts/fetch_opencv_source.sh (needs Debian's deb-src, root or sudo)")
-    execute_process(
-      COMMAND bash "${LSDA_ROOT}/scripts/fetch_opencv_source.sh" "${LSDA_DEFAULT_OPENCV_SOURCE_DIR}"
-      RESULT_VARIABLE _rc)
-    if(NOT _rc EQUAL 0)
-      message(FATAL_ERROR "lsd_advance: fetching the OpenCV source tree failed (exit ${_rc}). "
-                          "Tests need OpenCV's ts module built from OpenCV ${OpenCV_VERSION} sources. ${_lsda_hint}")
-    endif()
-  endif()
-  set(OPENCV_SOURCE_DIR "${LSDA_DEFAULT_OPENCV_SOURCE_DIR}")
-endif()
-set(OPENCV_SOURCE_DIR "${OPENCV_SOURCE_DIR}" CACHE PATH "OpenCV source tree (same version as the installed OpenCV), used to build ts for the tests" FORCE)
-get_filename_component(OPENCV_SOURCE_DIR "${OPENCV_SOURCE_DIR}" ABSOLUTE)
-
-_lsda_source_version("${OPENCV_SOURCE_DIR}" _src_version)
-if(_src_version STREQUAL "")
-  message(FATAL_ERROR "lsd_advance: OPENCV_SOURCE_DIR=${OPENCV_SOURCE_DIR} is not an OpenCV source tree "
-                      "(no modules/core/include/opencv2/core/version.hpp). ${_lsda_hint}")
-endif()
-if(NOT _src_version STREQUAL OpenCV_VERSION)
-  message(FATAL_ERROR "lsd_advance: OpenCV source tree ${OPENCV_SOURCE_DIR} is version ${_src_version}, "
-                      "but the installed OpenCV (${OpenCV_DIR}) is ${OpenCV_VERSION}. They must match. ${_lsda_hint}")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/opencv_source.cmake")
+set(_lsda_hint "Tests need OpenCV's ts module built from OpenCV ${OpenCV_VERSION} sources; or pass -DBUILD_TESTS=OFF.")
+lsda_find_opencv_source(ON "${_lsda_hint}")
 set(_ts_dir "${OPENCV_SOURCE_DIR}/modules/ts")
 if(NOT EXISTS "${_ts_dir}/src/ts.cpp")
   message(FATAL_ERROR "lsd_advance: ${_ts_dir} has no ts sources. ${_lsda_hint}")
 endif()
-message(STATUS "lsd_advance: building ts from ${OPENCV_SOURCE_DIR} (OpenCV ${_src_version})")
+message(STATUS "lsd_advance: building ts from ${OPENCV_SOURCE_DIR} (OpenCV ${OpenCV_VERSION})")
 
 # Minimal generated headers that ts expects from an OpenCV build tree. Nothing in them enables
 # an optional backend (IPP, OpenCL, CUDA): ts then compiles only its portable code paths.

@@ -2,16 +2,20 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 #
-# Python module of the standalone build: `import lsd_advance` (python/, pybind11), the API of the
-# in-tree cv2.ximgproc bindings for use with the distribution's cv2 (Debian: python3-opencv).
-# In-tree, OpenCV's own generator makes the bindings (WRAP python) and this file is not used.
+# Python module of the standalone build: `import lsd_advance`, for use with the distribution's cv2
+# (Debian: python3-opencv). Its bindings are written by OpenCV's own generator from the public
+# headers, as in-tree (WRAP python), with the generator and cv2's conversions taken from the
+# OpenCV source tree of the installed version (cmake/opencv_source.cmake, with its contrib
+# modules: ximgproc's and line_descriptor's misc/python headers); python/gen_lsd_advance.py and
+# python/lsd_advance_module.cpp say how. In-tree this file is not used.
 #
 # Options:
 #   LSD_ADVANCE_PYTHON=ON|OFF  build the module into <build>/python/lsd_advance/ (use it with
-#                          PYTHONPATH=<build>/python). Default: ON when pybind11 (Debian: pybind11-dev)
-#                          and the Python 3 headers (python3-dev) are found, OFF with sanitizers.
+#                          PYTHONPATH=<build>/python). Default: ON when the Python 3 headers and
+#                          numpy (Debian: python3-dev python3-numpy) and the OpenCV source tree are
+#                          found, OFF with sanitizers or the fuzzer. ON fetches a missing source tree.
 #   Python3_EXECUTABLE=<python>  interpreter to build for. Default: the first of `python3` on PATH
-#                          and /usr/bin/python3 that imports numpy.
+#                          and /usr/bin/python3 that imports cv2 and numpy.
 #   LSD_ADVANCE_PYTHON_INSTALL_DIR=<dir>  where `cmake --install` puts the package folder
 #                          lsd_advance/, relative to the install prefix (or absolute). Default:
 #                          lib/python3.X/dist-packages for Debian's Python (which searches
@@ -21,34 +25,34 @@ set(_lsda_python_default OFF)
 set(_lsda_python_missing "")
 if(NOT DEFINED LSD_ADVANCE_PYTHON OR LSD_ADVANCE_PYTHON)
   if(NOT DEFINED Python3_EXECUTABLE)
-    # A python3 without numpy cannot use the module: prefer one that has it.
+    # The module needs cv2 and numpy at run time: prefer an interpreter that has them.
     find_program(LSDA_PATH_PYTHON3 NAMES python3)
     mark_as_advanced(LSDA_PATH_PYTHON3)
     foreach(_py ${LSDA_PATH_PYTHON3} /usr/bin/python3)
-      execute_process(COMMAND "${_py}" -c "import numpy" RESULT_VARIABLE _rc OUTPUT_QUIET ERROR_QUIET)
+      execute_process(COMMAND "${_py}" -c "import cv2, numpy" RESULT_VARIABLE _rc OUTPUT_QUIET ERROR_QUIET)
       if(_rc EQUAL 0)
         set(Python3_EXECUTABLE "${_py}" CACHE FILEPATH "Python 3 interpreter of the lsd_advance module")
         break()
       endif()
     endforeach()
   endif()
-  if(CMAKE_VERSION VERSION_LESS 3.18)
-    find_package(Python3 QUIET COMPONENTS Interpreter Development)
-  else()
-    find_package(Python3 QUIET COMPONENTS Interpreter Development.Module)
-  endif()
-  if(Python3_FOUND)
-    find_package(pybind11 CONFIG QUIET)
-  endif()
+  find_package(Python3 QUIET COMPONENTS Interpreter Development.Module NumPy)
+  include("${CMAKE_CURRENT_LIST_DIR}/opencv_source.cmake")
+  lsda_find_opencv_source("${LSD_ADVANCE_PYTHON}"
+    "The Python module is written by OpenCV's binding generator of the OpenCV ${OpenCV_VERSION} source tree; or pass -DLSD_ADVANCE_PYTHON=OFF.")
+  set(LSDA_PYTHON_SRC2 "${OPENCV_SOURCE_DIR}/modules/python/src2")
+  set(LSDA_PYTHON_CONTRIB "${OPENCV_SOURCE_DIR}/contrib/modules")
   if(NOT Python3_FOUND)
-    set(_lsda_python_missing "the Python 3 interpreter and headers (Debian: python3-dev python3-numpy)")
-  elseif(NOT pybind11_FOUND)
-    set(_lsda_python_missing "pybind11 (Debian: pybind11-dev python3-pybind11)")
+    set(_lsda_python_missing "the Python 3 interpreter and headers and numpy (Debian: python3-dev python3-numpy)")
+  elseif(NOT OPENCV_SOURCE_DIR)
+    set(_lsda_python_missing "the OpenCV ${OpenCV_VERSION} source tree (scripts/fetch_opencv_source.sh, or -DOPENCV_SOURCE_DIR)")
+  elseif(NOT EXISTS "${LSDA_PYTHON_SRC2}/gen2.py" OR NOT EXISTS "${LSDA_PYTHON_CONTRIB}/ximgproc/misc/python")
+    set(_lsda_python_missing "OpenCV's binding generator and contrib modules in ${OPENCV_SOURCE_DIR} (modules/python/src2, contrib/modules)")
   elseif(NOT LSD_ADVANCE_SANITIZE AND NOT LSD_ADVANCE_FUZZ)
     set(_lsda_python_default ON)
   endif()
 endif()
-option(LSD_ADVANCE_PYTHON "Build the Python module lsd_advance (pybind11)" ${_lsda_python_default})
+option(LSD_ADVANCE_PYTHON "Build the Python module lsd_advance (OpenCV's binding generator)" ${_lsda_python_default})
 
 if(NOT LSD_ADVANCE_PYTHON)
   if(_lsda_python_missing)
@@ -62,13 +66,43 @@ if(_lsda_python_missing)
   message(FATAL_ERROR "lsd_advance: LSD_ADVANCE_PYTHON=ON needs ${_lsda_python_missing}")
 endif()
 
+# The generator reads the public headers as OpenCV's build does, and the headers of the types of
+# other modules they use from the installed OpenCV.
+find_path(LSDA_OPENCV_INCLUDE_DIR opencv2/core.hpp HINTS ${OpenCV_INCLUDE_DIRS} NO_DEFAULT_PATH)
+mark_as_advanced(LSDA_OPENCV_INCLUDE_DIR)
+set(_gen_dir "${CMAKE_BINARY_DIR}/python_bindings")
+set(_generated "")
+foreach(_h include funcs enums types types_content modules modules_content)
+  list(APPEND _generated "${_gen_dir}/pyopencv_generated_${_h}.h")
+endforeach()
+list(APPEND _generated "${_gen_dir}/pyopencv_foreign_types.h")
+if(TARGET opencv_line_descriptor)
+  set(_with_keylines 1)
+else()
+  set(_with_keylines 0)
+endif()
+add_custom_command(OUTPUT ${_generated}
+  COMMAND "${CMAKE_COMMAND}" -E make_directory "${_gen_dir}"
+  COMMAND "${Python3_EXECUTABLE}" "${LSDA_ROOT}/python/gen_lsd_advance.py" "${LSDA_PYTHON_SRC2}" "${_gen_dir}"
+          "${LSDA_OPENCV_INCLUDE_DIR}" ${_with_keylines} ${LSDA_PUBLIC_HEADERS} > "${_gen_dir}/generator.log"
+  DEPENDS "${LSDA_ROOT}/python/gen_lsd_advance.py" "${LSDA_PYTHON_SRC2}/gen2.py" "${LSDA_PYTHON_SRC2}/hdr_parser.py"
+          ${LSDA_PUBLIC_HEADERS}
+  COMMENT "lsd_advance: Python bindings by OpenCV's generator (${LSDA_PYTHON_SRC2}/gen2.py)")
+
 set(LSDA_PYTHON_PACKAGE_DIR "${CMAKE_BINARY_DIR}/python/lsd_advance")
-# NO_EXTRAS: no link-time optimisation, which costs build time for glue code (measured 49 s -> 29 s).
-pybind11_add_module(lsda_python MODULE NO_EXTRAS "${LSDA_ROOT}/python/lsd_advance_python.cpp")
-target_link_libraries(lsda_python PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
-target_include_directories(lsda_python PRIVATE "${LSDA_ROOT}/src")  # the parameter tables
-target_compile_definitions(lsda_python PRIVATE ${LSDA_MODULE_DEFINITIONS})
-target_compile_options(lsda_python PRIVATE ${LSDA_WARNINGS})
+set(_cv2_sources "${LSDA_PYTHON_SRC2}/cv2_convert.cpp" "${LSDA_PYTHON_SRC2}/cv2_util.cpp" "${LSDA_PYTHON_SRC2}/cv2_numpy.cpp")
+Python3_add_library(lsda_python MODULE WITH_SOABI "${LSDA_ROOT}/python/lsd_advance_module.cpp" ${_cv2_sources} ${_generated})
+target_include_directories(lsda_python PRIVATE "${_gen_dir}" "${LSDA_PYTHON_SRC2}" "${LSDA_ROOT}/misc/python"
+  "${LSDA_PYTHON_CONTRIB}/ximgproc/misc/python" "${LSDA_PYTHON_CONTRIB}/line_descriptor/misc/python")
+# cv2_util.cpp needs a private header of core, which is not installed: searched last, so that the
+# source tree shadows no installed header.
+target_compile_options(lsda_python PRIVATE "-idirafter" "${OPENCV_SOURCE_DIR}/modules/core/include")
+target_link_libraries(lsda_python PRIVATE opencv_lsd_advance Python3::NumPy ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
+# HAVE_OPENCV_LSD_ADVANCE: what OpenCV's build defines for a module it wraps (misc/python's headers).
+target_compile_definitions(lsda_python PRIVATE ${LSDA_MODULE_DEFINITIONS} HAVE_OPENCV_LSD_ADVANCE)
+# OpenCV's own code is not held to the module's warnings (the generated code is, as in-tree).
+set_source_files_properties(${_cv2_sources} PROPERTIES COMPILE_OPTIONS "-w")
+set_source_files_properties("${LSDA_ROOT}/python/lsd_advance_module.cpp" PROPERTIES COMPILE_OPTIONS "${LSDA_WARNINGS}")
 set_target_properties(lsda_python PROPERTIES
   OUTPUT_NAME _lsd_advance
   LIBRARY_OUTPUT_DIRECTORY "${LSDA_PYTHON_PACKAGE_DIR}")
@@ -100,5 +134,6 @@ file(GLOB LSDA_PYTHON_SAMPLES CONFIGURE_DEPENDS "${LSDA_ROOT}/samples/python/*.p
 install(PROGRAMS ${LSDA_PYTHON_SAMPLES} DESTINATION "${CMAKE_INSTALL_DATADIR}/opencv4/samples/lsd_advance/python"
   COMPONENT python)
 
-message(STATUS "lsd_advance: Python module for ${Python3_EXECUTABLE} (${Python3_VERSION}, pybind11 ${pybind11_VERSION}) "
-               "in ${LSDA_PYTHON_PACKAGE_DIR}; installs to ${_lsda_python_dest} (LSD_ADVANCE_PYTHON_INSTALL_DIR)")
+message(STATUS "lsd_advance: Python module for ${Python3_EXECUTABLE} (${Python3_VERSION}), bindings by "
+               "${LSDA_PYTHON_SRC2}/gen2.py, in ${LSDA_PYTHON_PACKAGE_DIR}; installs to ${_lsda_python_dest} "
+               "(LSD_ADVANCE_PYTHON_INSTALL_DIR)")

@@ -8,17 +8,20 @@
 #   BUILD_TESTS=ON|OFF     opencv_test_lsd_advance + opencv_perf_lsd_advance (needs OpenCV's `ts`,
 #                          compiled here from an OpenCV source tree of the installed version)
 #   BUILD_EXAMPLES=ON|OFF  one executable per samples/NAME.cpp, named NAME
+#   BUILD_APPS=ON|OFF      one executable per apps/lsd_advance_bench/NAME.cpp (the benchmark, the
+#                          sweep, the detect CLI), named NAME; they read the method files of
+#                          apps/lsd_advance_bench/methods/ in the source tree and are not installed
 #   OPENCV_SOURCE_DIR=<dir> OpenCV source tree (same version as the installed OpenCV) for `ts`.
 #                          Default: $ENV{OPENCV_SOURCE_DIR}, else
 #                          ${XDG_CACHE_HOME:-~/.cache}/lsd_advance/opencv-<version>, fetched there
 #                          by scripts/fetch_opencv_source.sh when missing (Debian).
 #   LSD_ADVANCE_WERROR=ON  treat warnings as errors in the module's own targets
-#   LSD_ADVANCE_SANITIZE=<list>  build the module's targets (library, tests, samples; not ts) with
+#   LSD_ADVANCE_SANITIZE=<list>  build the module's targets (library, tests, samples, apps; not ts) with
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
 #   LSD_ADVANCE_FUZZ=ON    the libFuzzer target lsd_advance_fuzz (fuzz/; needs clang; scripts/fuzz.sh)
 #   LSD_ADVANCE_ELSED_DIR=<dir>  ELSED's sources (<dir>/src/ELSED.cpp; CI: ../shared/peers/elsed),
-#                          compiled from that folder as an optional peer: the samples get the method
+#                          compiled from that folder as an optional peer: the apps get the method
 #                          `elsed` and the perf suite its ELSED cases. Default: empty, no peer.
 #
 # `cmake --install <build> [--prefix <p>]` (GNUInstallDirs; scripts/check_install.sh checks it):
@@ -30,17 +33,18 @@
 #   bin/lsd_advance_*                                   the sample programs (BUILD_EXAMPLES=ON)
 #   bin/setup_vars_lsd_advance.sh                       PATH, LD_LIBRARY_PATH, PKG_CONFIG_PATH,
 #                                                       CMAKE_PREFIX_PATH, PYTHONPATH of the install
-#   share/opencv4/samples/lsd_advance/                  the sample sources and samples/consumer/
+#   share/opencv4/samples/lsd_advance/                  the sample sources (C++ and Python)
 # Tests, perf tests, OpenCV's ts and the fuzzer are not installed.
 # Version: the module carries the version of the OpenCV it is built against, as opencv_contrib
 # modules do (library VERSION, package and pkg-config version); SOVERSION is its major.minor.
 
 option(BUILD_TESTS "Build accuracy and performance tests (needs an OpenCV source tree for ts)" ON)
 option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
+option(BUILD_APPS "Build the benchmark apps apps/lsd_advance_bench/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
 set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
 option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
-set(LSD_ADVANCE_ELSED_DIR "" CACHE PATH "ELSED source folder, built as an optional peer of the samples and perf suite (empty: none)")
+set(LSD_ADVANCE_ELSED_DIR "" CACHE PATH "ELSED source folder, built as an optional peer of the apps and perf suite (empty: none)")
 
 include(GNUInstallDirs)
 
@@ -58,8 +62,8 @@ set(_lsda_optional line_descriptor highgui videoio)
 if(BUILD_TESTS)
   # ts itself needs highgui and videoio
   list(APPEND _lsda_required highgui videoio)
-elseif(BUILD_EXAMPLES)
-  # lsd_advance_detect reads videos
+elseif(BUILD_EXAMPLES OR BUILD_APPS)
+  # lsd_advance_video and lsd_advance_detect read videos
   list(APPEND _lsda_required videoio)
 endif()
 list(REMOVE_ITEM _lsda_optional ${_lsda_required})
@@ -102,7 +106,7 @@ endif()
 
 set(LSDA_SANITIZE_OPTIONS "")
 if(LSD_ADVANCE_SANITIZE)
-  # The module's own code (library, tests, samples) is instrumented; OpenCV's ts, like the
+  # The module's own code (library, tests, samples, apps) is instrumented; OpenCV's ts, like the
   # installed OpenCV itself, is not: it only needs to link with the sanitizer runtime.
   set(LSDA_SANITIZE_OPTIONS -fsanitize=${LSD_ADVANCE_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=${LSD_ADVANCE_SANITIZE})
@@ -147,7 +151,7 @@ endif()
 
 # ---------------------------------------------------------------------------------------------
 # ELSED, the optional peer detector: compiled from its own folder (never copied here) for
-# side-by-side measurement in the samples and the perf suite, which see LSD_ADVANCE_HAVE_ELSED.
+# side-by-side measurement in the apps and the perf suite, which see LSD_ADVANCE_HAVE_ELSED.
 set(LSDA_PEER_LIBS "")
 if(LSD_ADVANCE_ELSED_DIR)
   get_filename_component(_elsed_dir "${LSD_ADVANCE_ELSED_DIR}" ABSOLUTE)
@@ -173,19 +177,31 @@ if(LSD_ADVANCE_ELSED_DIR)
 endif()
 
 # ---------------------------------------------------------------------------------------------
-# Samples
+# Samples (the public API only) and the benchmark apps (with the method files and the peer)
+set(LSDA_METHODS_DIR "${LSDA_ROOT}/apps/lsd_advance_bench/methods")
 set(LSDA_SAMPLE_TARGETS "")
-if(BUILD_EXAMPLES)
-  file(GLOB LSDA_SAMPLES CONFIGURE_DEPENDS "${LSDA_ROOT}/samples/*.cpp")
-  foreach(_src ${LSDA_SAMPLES})
+foreach(_kind samples apps)
+  if(_kind STREQUAL "samples" AND BUILD_EXAMPLES)
+    file(GLOB _srcs CONFIGURE_DEPENDS "${LSDA_ROOT}/samples/*.cpp")
+  elseif(_kind STREQUAL "apps" AND BUILD_APPS)
+    file(GLOB _srcs CONFIGURE_DEPENDS "${LSDA_ROOT}/apps/lsd_advance_bench/*.cpp")
+  else()
+    continue()
+  endif()
+  foreach(_src ${_srcs})
     get_filename_component(_name "${_src}" NAME_WE)
     add_executable(${_name} "${_src}")
-    target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS} ${LSDA_PEER_LIBS})
+    target_link_libraries(${_name} PRIVATE opencv_lsd_advance ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
     target_compile_options(${_name} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
     set_target_properties(${_name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
-    list(APPEND LSDA_SAMPLE_TARGETS ${_name})
+    if(_kind STREQUAL "apps")
+      target_link_libraries(${_name} PRIVATE ${LSDA_PEER_LIBS})
+      target_compile_definitions(${_name} PRIVATE LSD_ADVANCE_METHODS_DIR="${LSDA_METHODS_DIR}")
+    else()
+      list(APPEND LSDA_SAMPLE_TARGETS ${_name})
+    endif()
   endforeach()
-endif()
+endforeach()
 
 # ---------------------------------------------------------------------------------------------
 # Tests
@@ -209,6 +225,7 @@ if(BUILD_TESTS)
     set_target_properties(${_target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
     if(_kind STREQUAL "perf")
       target_link_libraries(${_target} PRIVATE ${LSDA_PEER_LIBS})
+      target_compile_definitions(${_target} PRIVATE LSD_ADVANCE_METHODS_DIR="${LSDA_METHODS_DIR}")
     endif()
   endforeach()
 
@@ -317,14 +334,13 @@ install(FILES "${CMAKE_BINARY_DIR}/install/opencv_lsd_advance.pc"
 install(PROGRAMS "${CMAKE_BINARY_DIR}/install/setup_vars_lsd_advance.sh" DESTINATION "${CMAKE_INSTALL_BINDIR}")
 
 # Samples: the programs, with an RPATH to the installed library, and their sources (as OpenCV
-# installs a module's samples) together with the consumer project samples/consumer/.
+# installs a module's samples). The apps are this repository's tooling: not installed.
 if(LSDA_SAMPLE_TARGETS)
   file(RELATIVE_PATH _lsda_bin_to_lib "${CMAKE_INSTALL_FULL_BINDIR}" "${CMAKE_INSTALL_FULL_LIBDIR}")
   set_target_properties(${LSDA_SAMPLE_TARGETS} PROPERTIES INSTALL_RPATH "$ORIGIN/${_lsda_bin_to_lib}")
   install(TARGETS ${LSDA_SAMPLE_TARGETS} RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
 endif()
-file(GLOB LSDA_SAMPLE_SOURCES CONFIGURE_DEPENDS "${LSDA_ROOT}/samples/*.cpp" "${LSDA_ROOT}/samples/*.hpp")
+file(GLOB LSDA_SAMPLE_SOURCES CONFIGURE_DEPENDS "${LSDA_ROOT}/samples/*.cpp")
 install(FILES ${LSDA_SAMPLE_SOURCES} DESTINATION "${LSDA_INSTALL_SAMPLESDIR}")
-install(DIRECTORY "${LSDA_ROOT}/samples/consumer" DESTINATION "${LSDA_INSTALL_SAMPLESDIR}")
 
-message(STATUS "lsd_advance: BUILD_TESTS=${BUILD_TESTS} BUILD_EXAMPLES=${BUILD_EXAMPLES}")
+message(STATUS "lsd_advance: BUILD_TESTS=${BUILD_TESTS} BUILD_EXAMPLES=${BUILD_EXAMPLES} BUILD_APPS=${BUILD_APPS}")

@@ -6,7 +6,8 @@
 # Usage: bash perf/perf_ratios.sh [build dir] [extra opencv_perf_lsd_advance options]
 #
 # Runs the image cases of opencv_perf_lsd_advance (every method on the same images, in one run)
-# and prints a Markdown table: per image set, the median time of each method divided by the
+# and prints a Markdown table: per image set, the median time of each method (by its name in
+# apps/lsd_advance_bench/line_methods.hpp) divided by the
 # median time of OpenCV's LSD on the same image (the mean of these ratios over the set's images),
 # and the median milliseconds. Needs LSD_ADVANCE_DATA_DIR for the YorkUrban and KITTI frames and
 # OPENCV_SAMPLES_DATA_PATH for building.jpg (both default to this machine's locations).
@@ -30,7 +31,7 @@ awk '
     line = $0
     sub(/.*GetParam\(\) = \(/, "", line); sub(/\)$/, "", line)
     n = split(line, part, ", ")
-    image = part[1]; gsub(/"/, "", image); method = part[n]
+    image = part[1]; gsub(/"/, "", image); method = part[n]; gsub(/"/, "", method)
     set = image ~ /yorkurban/ ? "YorkUrban" : (image ~ /kitti/ ? "KITTI" : image)
     next
   }
@@ -48,8 +49,8 @@ awk '
       row = "| " methods[k] " |"
       for (s = 1; s <= ns; s++) {
         sum = 0; cnt = 0; msSum = 0
-        for (key in setOf) if (setOf[key] == sets[s] && ((key, "LSD") in ms) && ((key, methods[k]) in ms)) {
-          sum += ms[key, methods[k]] / ms[key, "LSD"]; msSum += ms[key, methods[k]]; cnt++
+        for (key in setOf) if (setOf[key] == sets[s] && ((key, "lsd") in ms) && ((key, methods[k]) in ms)) {
+          sum += ms[key, methods[k]] / ms[key, "lsd"]; msSum += ms[key, methods[k]]; cnt++
         }
         row = row (cnt ? sprintf(" %.2f | %.1f |", sum / cnt, msSum / cnt) : " - | - |")
       }

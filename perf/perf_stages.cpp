@@ -74,9 +74,9 @@ std::vector<Vec4f> oneEdgeInPieces(int n)
 enum Strategy { LONGEST_FIRST, BASELINES };
 CV_ENUM(StrategyType, LONGEST_FIRST, BASELINES)
 
-LSDAdvance::Params mergeParams(int strategy)
+lsda::MergingParams mergeParams(int strategy)
 {
-    LSDAdvance::Params p;
+    lsda::MergingParams p;
     p.mergeStrategy = strategy == BASELINES ? LSDAdvance::MERGE_BASELINES : LSDAdvance::MERGE_LONGEST_FIRST;
     return p;
 }
@@ -92,7 +92,7 @@ PERF_TEST_P(Stage_Segments, lengthFilter, SEGMENT_COUNTS)
     TEST_CYCLE()
     {
         const double minLength = lsda::adaptiveMinLength(segments, 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED);
-        lsda::dropShortSegments(segments, minLength, kept);
+        lsda::keepLongOrStrong(segments, std::vector<float>(), minLength, 0.0, kept);
     }
     EXPECT_LT(kept.size(), segments.size());
     SANITY_CHECK_NOTHING();
@@ -103,7 +103,7 @@ PERF_TEST_P(Stage_Segments, grouping, SEGMENT_COUNTS)
     const std::vector<Vec4f> segments = recordedSegments(GetParam());
     lsda::SegmentGroups groups;
     lsda::GroupingWorkspace workspace;
-    TEST_CYCLE() lsda::groupSegments(segments, LSDAdvance::Params(), groups, workspace);
+    TEST_CYCLE() lsda::groupSegments(segments, lsda::GroupingParams(), groups, workspace);
     EXPECT_LT(groups.count(), (int)segments.size());
     SANITY_CHECK_NOTHING();
 }
@@ -113,9 +113,9 @@ typedef perf::TestBaseWithParam<tuple<int, StrategyType> > Stage_Segments_Strate
 PERF_TEST_P(Stage_Segments_Strategy, merging, testing::Combine(SEGMENT_COUNTS, StrategyType::all()))
 {
     const std::vector<Vec4f> segments = recordedSegments(get<0>(GetParam()));
-    const LSDAdvance::Params params = mergeParams(get<1>(GetParam()));
+    const lsda::MergingParams params = mergeParams(get<1>(GetParam()));
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
+    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
     std::vector<Vec4f> merged;
     lsda::MergeWorkspace workspace;
     std::vector<int> mergedInto;
@@ -140,9 +140,9 @@ PERF_TEST_P(Stage_Segments_Strategy, mergingOneGroup,
             testing::Combine(testing::Values(1000, 5000, 20000), StrategyType::all()))
 {
     const std::vector<Vec4f> segments = oneEdgeInPieces(get<0>(GetParam()));
-    const LSDAdvance::Params params = mergeParams(get<1>(GetParam()));
+    const lsda::MergingParams params = mergeParams(get<1>(GetParam()));
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
+    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
     ASSERT_EQ(1, groups.count());
     std::vector<Vec4f> merged;
     lsda::MergeWorkspace workspace;

@@ -5,14 +5,21 @@
 #
 # Usage: bash scripts/benchmark.sh [DATA_DIR]
 #
-# Produces the tables of README "Results": every method in one run per data set, one thread,
-# on YorkUrban (all images, then the odd images the defaults were not tuned on), KITTI and
-# EuRoC, then LBD line matching on the HPatches graffiti pairs, OpenCV's graf1/graf3 and KITTI
+# Measures everything the documentation quotes, in one run, and writes it to doc/results.md, the
+# one page of measured numbers (scripts/check_figures.py fails CI when another page quotes a
+# figure that page does not hold): every method in one run per data set, one thread, on
+# YorkUrban (all images, then the odd images the defaults were not tuned on), KITTI and EuRoC;
+# LBD line matching on the HPatches graffiti pairs, OpenCV's graf1/graf3 and KITTI
 # (doc/matching.md), with all lines and at line budgets of 100, 200 and 400 per image, and the
-# tracks the matches chain into on KITTI and EuRoC. DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository.
-# Builds (or brings up to date) the benchmark program first. With ELSED's sources beside the
-# repository (../shared/peers/elsed) or in LSD_ADVANCE_ELSED_DIR, ELSED is built as an optional
-# peer and measured in every table. Takes about 20 minutes.
+# tracks the matches chain into on KITTI and EuRoC; the parameter sweep of
+# doc/parameter_sweep.md; the samples on OpenCV's images. It also writes the YorkUrban charts
+# (doc/pics/results_yorkurban_*.svg) and copies the YorkUrban table into README.md (between its
+# "results: yorkurban" markers). The page says on which machine, commit and date it was made.
+# DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository. Builds
+# (or brings up to date) the programs first. With ELSED's sources beside the repository
+# (../shared/peers/elsed) or in LSD_ADVANCE_ELSED_DIR, ELSED is built as an optional peer and
+# measured in every table. Takes a few minutes on an idle 2-core machine, longer on a busy one;
+# the page is replaced only when every step succeeded.
 #
 # Environment:
 #   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)
@@ -23,17 +30,18 @@ set -euo pipefail
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${LSD_ADVANCE_BUILD_DIR:-$REPO/build}"
 JOBS="${LSD_ADVANCE_JOBS:-2}"
-DATA="${1:-${LSD_ADVANCE_DATA_DIR:-$REPO/../shared/data}}"
+DATA="$(cd "${1:-${LSD_ADVANCE_DATA_DIR:-$REPO/../shared/data}}" && pwd)"
 [ -d "$DATA/yorkurban" ] || { echo "ERROR: no yorkurban/ in $DATA" >&2; exit 1; }
 
+PROGRAMS=(lsd_advance_benchmark lsd_advance_sweep lsd_advance_demo lsd_advance_lbd_matching lsd_advance_video)
 [ -x "$BUILD/lsd_advance_benchmark" ] || bash "$REPO/scripts/install_deps.sh"
 PEER_ARG="$(bash "$REPO/scripts/elsed_peer.sh")"
 if [ -f "$BUILD/CMakeCache.txt" ]; then
-  cmake "$BUILD" "$PEER_ARG" >/dev/null   # keeps the build's other options
+  cmake "$BUILD" "$PEER_ARG" -DBUILD_APPS=ON -DBUILD_EXAMPLES=ON >/dev/null   # keeps the build's other options
 else
   cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTS=OFF "$PEER_ARG"
 fi
-cmake --build "$BUILD" -j"$JOBS" --target lsd_advance_benchmark
+cmake --build "$BUILD" -j"$JOBS" --target "${PROGRAMS[@]}"
 export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
 
 B="$BUILD/lsd_advance_benchmark"
@@ -44,46 +52,110 @@ MATCHING="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_merge,lsdadvance"
 SEQUENCE="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_filter,lsdadvance_fastest,lsdadvance,lsdadvance_interframe,lsdadvance_continuous,lsdadvance_tracking,lsdadvance_sequence"
 BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance,lsdadvance_sequence"
 
-echo "### YorkUrban-LineSegment, all 51 images"
-echo
-"$B" --dataset=yorkurban --data="$DATA/yorkurban" --methods="$STILL" --repeats=3
-echo
-echo "### YorkUrban-LineSegment, the 25 odd images (not used to choose the defaults)"
-echo
-"$B" --dataset=yorkurban --data="$DATA/yorkurban" --subset=odd --methods="$STILL" --repeats=3
-echo
-echo "### KITTI, 51 consecutive frames (a sequence: inter-frame factors active)"
-echo
-"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$SEQUENCE" --no-match
-echo
-echo "### EuRoC V1_01 before take-off, 95 frames of a still camera"
-echo
-"$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$SEQUENCE" --no-match
-echo
-echo "### LBD matching, HPatches v_graffiti (pairs 1-2 ... 1-6, exact homographies)"
-echo
-"$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$MATCHING"
-echo
-echo "### LBD matching, OpenCV's graf1.png / graf3.png with H1to3p.xml"
-echo
-"$B" --dataset=homography --image1=graf1.png --image2=graf3.png --homography=H1to3p.xml --methods="$MATCHING"
-echo
-echo "### LBD matching, KITTI consecutive frames (epipolar check, 50 pairs)"
-echo
-"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$MATCHING"
-echo
-echo "### LBD matching at equal line budgets (each method's N lines of highest KeyLine response): HPatches v_graffiti"
-echo
-"$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$BUDGET" --top=100,200,400
-echo
-echo "### LBD matching at equal line budgets: OpenCV's graf1.png / graf3.png"
-echo
-"$B" --dataset=homography --image1=graf1.png --image2=graf3.png --homography=H1to3p.xml --methods="$BUDGET" --top=100,200,400
-echo
-echo "### LBD matching and tracks at equal line budgets: KITTI"
-echo
-"$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$BUDGET" --top=100,200,400
-echo
-echo "### Tracks at equal line budgets: EuRoC V1_01, still camera"
-echo
-"$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$BUDGET" --top=100,200,400
+PAGE="$REPO/doc/results.md"
+WORK="$(mktemp -d)"
+trap 'rm -rf "$WORK"' EXIT
+OUT="$WORK/results.md"
+CHARTS="$WORK/results_yorkurban"
+# Markdown for the page on stdout; commands and progress on stderr.
+section() { printf '\n## %s\n\n' "$1"; }
+run() { echo "+ ${*/#$REPO\//}" >&2; "$@"; }
+output() { echo '```'; run "$@" | grep -v '^wrote '; echo '```'; }
+
+opencv_dir="$(sed -n 's/^OpenCV_DIR:[A-Z]*=//p' "$BUILD/CMakeCache.txt")"
+opencv_version="$(sed -n 's/.*set(OpenCV_VERSION \([0-9.]*\)).*/\1/p' "$opencv_dir/OpenCVConfig-version.cmake")"
+compiler="$("$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$BUILD/CMakeCache.txt")" --version | head -n1)"
+commit="$(git -C "$REPO" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+if [ -n "$(git -C "$REPO" status --porcelain -- src include apps samples 2>/dev/null)" ]; then
+  commit="$commit with uncommitted changes to src/, include/, apps/ or samples/"
+fi
+{
+  echo "# Results"
+  echo
+  echo "Every measured number of this repository's documentation, from one run of"
+  echo "\`bash scripts/benchmark.sh\`: generated, not edited (\`scripts/check_figures.py\` fails CI when"
+  echo "another page quotes a figure this page does not hold)."
+  echo
+  echo "| | |"
+  echo "|---|---|"
+  echo "| date | $(date -u +%Y-%m-%d) |"
+  echo "| commit | $commit |"
+  echo "| machine | $(lscpu | sed -n 's/^Model name: *//p' | head -n1), $(nproc) cores, $(free -g | awk '/^Mem:/ { print $2 }') GiB |"
+  echo "| system | $(. /etc/os-release && echo "$PRETTY_NAME"), $compiler, OpenCV $opencv_version |"
+  echo "| ELSED | $([ -n "$PEER" ] && echo "built from ${PEER_ARG#-DLSD_ADVANCE_ELSED_DIR=}" || echo "not built: no ELSED rows") |"
+  echo
+  echo "One thread; times are medians on a machine that may be shared while it measures: compare them"
+  echo "as ratios within one table (\"time / LSD\" is the median over images of each image's time"
+  echo "divided by OpenCV LSD's on the same image), never across tables or runs. Every other column"
+  echo "is the same on any machine. YorkUrban is scored with SPEC.md's structural protocol (detections"
+  echo "shifted by +0.5 px; AP and AR are means over images, F = 2 AP AR / (AP + AR)); \"long share\""
+  echo "is the share of segments of 60 px or more; the matching columns follow [matching.md](matching.md)."
+  echo "The methods are those of \`apps/lsd_advance_bench/line_methods.hpp\`, LSDAdvance's variants the"
+  echo "files \`apps/lsd_advance_bench/methods/<name>.yml\` (their titles are the rows' names)."
+
+  section "YorkUrban-LineSegment, all 51 images"
+  run "$B" --dataset=yorkurban --data="$DATA/yorkurban" --methods="$STILL" --repeats=3 --chart="$CHARTS"
+  echo
+  echo "![F per method on YorkUrban](pics/results_yorkurban_f.svg)"
+  echo
+  echo "![Time per image, and its ratio to LSD's in the same run](pics/results_yorkurban_time.svg)"
+  echo
+  echo "![Share of segments of 60 px or more](pics/results_yorkurban_long.svg)"
+  section "YorkUrban-LineSegment, the 25 odd images (not used to choose the defaults)"
+  run "$B" --dataset=yorkurban --data="$DATA/yorkurban" --subset=odd --methods="$STILL" --repeats=3
+  section "KITTI, 51 consecutive frames (a sequence: inter-frame factors active)"
+  run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$SEQUENCE" --no-match
+  section "EuRoC V1_01 before take-off, 95 frames of a still camera"
+  run "$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$SEQUENCE" --no-match
+  section "LBD matching, HPatches v_graffiti (pairs 1-2 ... 1-6, exact homographies)"
+  run "$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$MATCHING"
+  section "LBD matching, OpenCV's graf1.png / graf3.png with H1to3p.xml"
+  run "$B" --dataset=homography --image1=graf1.png --image2=graf3.png --homography=H1to3p.xml --methods="$MATCHING"
+  section "LBD matching, KITTI consecutive frames (epipolar check, 50 pairs)"
+  run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$MATCHING"
+  section "LBD matching at equal line budgets (each method's N lines of highest KeyLine response): HPatches v_graffiti"
+  run "$B" --dataset=homography --data="$DATA/hpatches_v_graffiti" --methods="$BUDGET" --top=100,200,400
+  section "LBD matching at equal line budgets: OpenCV's graf1.png / graf3.png"
+  run "$B" --dataset=homography --image1=graf1.png --image2=graf3.png --homography=H1to3p.xml --methods="$BUDGET" \
+    --top=100,200,400
+  section "LBD matching and tracks at equal line budgets: KITTI"
+  run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$BUDGET" --top=100,200,400
+  section "Tracks at equal line budgets: EuRoC V1_01, still camera"
+  run "$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$BUDGET" --top=100,200,400
+
+  section "Parameter sweep (doc/parameter_sweep.md)"
+  run "$BUILD/lsd_advance_sweep" --data="$DATA/yorkurban"
+
+  section "The samples on OpenCV's images"
+  echo "\`lsd_advance_demo\` (building.jpg; one timed detection each):"
+  echo
+  output "$BUILD/lsd_advance_demo" --output="$WORK/demo.png"
+  echo
+  echo "\`lsd_advance_lbd_matching graf1.png graf3.png -H=H1to3p.xml\`:"
+  echo
+  output "$BUILD/lsd_advance_lbd_matching" graf1.png graf3.png -H=H1to3p.xml
+  echo
+  echo "\`lsd_advance_video\` (vtest.avi, \`PRESET_SEQUENCE\`):"
+  echo
+  output "$BUILD/lsd_advance_video" --output="$WORK/video.png"
+} >"$OUT"
+
+mkdir -p "$REPO/doc/pics"
+for kind in f time long; do
+  cp "${CHARTS}_$kind.svg" "$REPO/doc/pics/results_yorkurban_$kind.svg"
+done
+mv "$OUT" "$PAGE"
+
+# README's results table: the YorkUrban table of the page, between the markers.
+/usr/bin/python3 - "$PAGE" "$REPO/README.md" <<'PY'
+import re, sys
+page, readme = (open(p, encoding="utf-8").read() for p in sys.argv[1:])
+table = re.search(r"^## YorkUrban-LineSegment, all 51 images\n.*?\n(\|.*?)\n\n", page, re.S | re.M).group(1)
+begin, end = "<!-- results: yorkurban (scripts/benchmark.sh copies it from doc/results.md) -->", "<!-- /results -->"
+if begin not in readme or end not in readme:
+    sys.exit("ERROR: README.md has no %s ... %s markers" % (begin, end))
+head, rest = readme.split(begin, 1)
+open(sys.argv[2], "w", encoding="utf-8").write(head + begin + "\n" + table + "\n" + end + rest.split(end, 1)[1])
+PY
+echo "[benchmark] wrote $PAGE, doc/pics/results_yorkurban_*.svg and README's results table" >&2
+/usr/bin/python3 "$REPO/scripts/check_figures.py" "$REPO" || true

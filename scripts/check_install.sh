@@ -8,23 +8,26 @@
 # Checks the install of a configured and built standalone build (default: $LSD_ADVANCE_BUILD_DIR,
 # else <repo>/build, as scripts/test.sh leaves it) as a user would use it:
 #   1. `cmake --install <build> --prefix <fresh temp prefix>`; the header tree, library, CMake
-#      package and pkg-config file are where README says, and no test, perf test, ts or fuzzer
+#      package and pkg-config file are where doc/building.md says, and no test, perf test, ts or fuzzer
 #      is installed;
-#   2. the installed consumer project (samples/consumer) configured with CMAKE_PREFIX_PATH=<prefix>
-#      only, built, and run on OpenCV's building.jpg: it must report a positive segment count;
+#   2. the consumer project scripts/install_consumer (a copy) configured with
+#      CMAKE_PREFIX_PATH=<prefix> only, built, and run on OpenCV's building.jpg: it must report a
+#      positive segment count;
 #   3. the same main.cpp built with `g++ main.cpp $(pkg-config --cflags --libs opencv_lsd_advance)`
 #      (PKG_CONFIG_PATH=<prefix>/<libdir>/pkgconfig, -Wl,-rpath) must report the same count;
-#   4. an installed sample program (<prefix>/bin/lsd_advance_detect) runs through its install
+#   4. an installed sample program (<prefix>/bin/lsd_advance_demo) runs through its install
 #      RPATH, loads the installed library, and detects as many segments as the consumer;
 #   5. consumers see the KeyLine API (HAVE_OPENCV_LINE_DESCRIPTOR) exactly when the library has it;
 #   6. when the build has the Python module (LSD_ADVANCE_PYTHON=ON), the installed `lsd_advance`
-#      imports from <prefix> (PYTHONPATH) and detects as many segments as the consumer;
-#   7. README "Another prefix": in a clean shell (env -i, PATH=/usr/local/bin:/usr/bin:/bin) that
-#      sources only <prefix>/bin/setup_vars_lsd_advance.sh, the commands of README and the
+#      imports from <prefix> (PYTHONPATH) and detects as many segments as the consumer, as KeyLines
+#      that cv2's LBD describes;
+#   7. doc/building.md "Another prefix": in a clean shell (env -i, PATH=/usr/local/bin:/usr/bin:/bin) that
+#      sources only <prefix>/bin/setup_vars_lsd_advance.sh, the commands of doc/building.md and the
 #      tutorial run as written: the sample program by name, pkg-config and a program built with
 #      its flags (no rpath), the consumer configured without -DCMAKE_PREFIX_PATH, `python3`
 #      importing lsd_advance, and the installed Python detect sample; all from <prefix>, all
 #      with the consumer's segment count.
+# The consumer is not installed: it is this check's project, a user's to copy (doc/building.md).
 # Exits non-zero with an `ERROR:` line on the first failure; the temp prefix is removed on success
 # and kept (path printed) on failure.
 #
@@ -93,11 +96,8 @@ not_installed="$(find "$PREFIX" | grep -E '/opencv_(test|perf)_[^/]*$|lsda_openc
 [ -z "$not_installed" ] || fail "tests/ts/fuzzer were installed:"$'\n'"$not_installed"
 echo "$(find "$PREFIX" -type f | wc -l) files installed; headers, library, CMake package, pkg-config file present; no tests"
 
-step "CMake consumer (samples/consumer as installed, CMAKE_PREFIX_PATH=$PREFIX)"
-CONSUMER_SRC="$PREFIX/share/opencv4/samples/lsd_advance/consumer"
-if [ ! -f "$CONSUMER_SRC/CMakeLists.txt" ] || [ ! -f "$CONSUMER_SRC/main.cpp" ]; then
-  fail "the consumer project is not installed in $CONSUMER_SRC"
-fi
+step "CMake consumer (scripts/install_consumer, CMAKE_PREFIX_PATH=$PREFIX)"
+CONSUMER_SRC="$REPO/scripts/install_consumer"
 cp -r "$CONSUMER_SRC" "$WORK/consumer"
 cmake -S "$WORK/consumer" -B "$WORK/consumer/build" -DCMAKE_PREFIX_PATH="$PREFIX" >"$WORK/consumer.log" 2>&1 \
   || { cat "$WORK/consumer.log" >&2; fail "configuring the consumer against $PREFIX failed"; }
@@ -109,7 +109,7 @@ out="$("$WORK/consumer/build/lsd_advance_consumer" "$IMAGE")" || fail "lsd_advan
 echo "$out"
 cmake_count="$(count_in "$out" "")"
 if [ -z "$cmake_count" ] || [ "$cmake_count" -le 0 ]; then fail "the CMake consumer reported no segments: '$out'"; fi
-# Bad input: one "Error:" line and exit status 1, as from every sample program.
+# Bad input: one "Error:" line and exit status 1.
 for bad in "" "$WORK/no_such_image.jpg"; do
   rc=0
   err="$("$WORK/consumer/build/lsd_advance_consumer" ${bad:+"$bad"} 2>&1 >/dev/null)" || rc=$?
@@ -148,16 +148,17 @@ echo "library: $lib_keylines, pkg-config consumer: $pc_keylines, CMake target de
 
 if [ "$(cache_value BUILD_EXAMPLES)" = "ON" ]; then
   step "installed sample program (install RPATH)"
-  SAMPLE="$PREFIX/bin/lsd_advance_detect"
+  SAMPLE="$PREFIX/bin/lsd_advance_demo"
   [ -x "$SAMPLE" ] || fail "$SAMPLE is not installed"
+  [ ! -e "$PREFIX/bin/lsd_advance_benchmark" ] || fail "the apps were installed (they are the repository's tooling)"
   loaded="$(env -u LD_LIBRARY_PATH ldd "$SAMPLE" | sed -n 's/.*libopencv_lsd_advance[^ ]* => \([^ ]*\).*/\1/p')"
   [ "$(readlink -f "$loaded")" = "$(readlink -f "$LIB")" ] \
     || fail "$SAMPLE loads libopencv_lsd_advance from '$loaded', not from $PREFIX/$LIBDIR"
   env -u LD_LIBRARY_PATH "$SAMPLE" --help >/dev/null 2>&1 || fail "$SAMPLE --help failed"
-  out="$(env -u LD_LIBRARY_PATH "$SAMPLE" -i="$IMAGE")" || fail "$SAMPLE -i=$IMAGE failed: $out"
-  echo "$out" | head -n 3
-  # the sample's default method is createLSDAdvance() with default parameters, as in main.cpp
-  sample_count="$(count_in "$out" "segments / image:")"
+  out="$(env -u LD_LIBRARY_PATH "$SAMPLE" "$IMAGE" --output="$WORK/demo.png")" || fail "$SAMPLE $IMAGE failed: $out"
+  echo "$out"
+  # the demo detects with createLSDAdvance() and default parameters, as main.cpp does
+  sample_count="$(count_in "$out" "LSDAdvance:")"
   [ "$sample_count" = "$cmake_count" ] || fail "$SAMPLE reports $sample_count segments, the consumer $cmake_count"
 else
   echo "BUILD_EXAMPLES is OFF in $BUILD: no sample program to check"
@@ -168,19 +169,26 @@ if [ "$(cache_value LSD_ADVANCE_PYTHON)" = "ON" ]; then
   PYTHON="$(cache_value Python3_EXECUTABLE)"
   PYDIR="$PREFIX/$(cache_value LSD_ADVANCE_PYTHON_INSTALL_DIR)"
   [ -f "$PYDIR/lsd_advance/__init__.py" ] || fail "the Python package is not installed in $PYDIR/lsd_advance"
+  # Its KeyLines are cv2's own: they go into cv2's LBD as they come.
   out="$(cd "$WORK" && env -u LD_LIBRARY_PATH PYTHONPATH="$PYDIR" "$PYTHON" -c '
 import sys, cv2, lsd_advance
-lines = lsd_advance.createLSDAdvance().detect(cv2.imread(sys.argv[1], cv2.IMREAD_GRAYSCALE))
-print(0 if lines is None else len(lines), "line segments, from", lsd_advance.__file__)' "$IMAGE")" \
+gray = cv2.imread(sys.argv[1], cv2.IMREAD_GRAYSCALE)
+lines = lsd_advance.createLSDAdvance().detect(gray)
+keylines = lsd_advance.createLSDAdvance().detectKeyLines(gray)
+described = cv2.line_descriptor.BinaryDescriptor_createBinaryDescriptor().compute(gray, keylines)[1]
+print(0 if lines is None else len(lines), "line segments, from", lsd_advance.__file__)
+print("KeyLines described by LBD:", len(keylines), described.shape[0])' "$IMAGE")" \
     || fail "importing the installed lsd_advance with $PYTHON (PYTHONPATH=$PYDIR) failed: $out"
   echo "$out"
   [[ "$out" == *"from $PYDIR/lsd_advance/"* ]] || fail "Python imported lsd_advance from elsewhere than $PYDIR: $out"
   [ "$(count_in "$out" "")" = "$cmake_count" ] || fail "the Python module reports '$out', the C++ consumer $cmake_count segments"
+  [ "$(sed -n 's/^KeyLines described by LBD: //p' <<<"$out")" = "$cmake_count $cmake_count" ] \
+    || fail "the Python module's KeyLines are not all described by cv2's LBD: $out"
 else
   echo "LSD_ADVANCE_PYTHON is not ON in $BUILD: no Python module to check"
 fi
 
-step "README \"Another prefix\": a clean shell with only $PREFIX/bin/setup_vars_lsd_advance.sh sourced"
+step "doc/building.md \"Another prefix\": a clean shell with only $PREFIX/bin/setup_vars_lsd_advance.sh sourced"
 BINDIR="$(cache_value CMAKE_INSTALL_BINDIR)"
 WITH_SAMPLES="$(cache_value BUILD_EXAMPLES)"
 WITH_PYTHON="$(cache_value LSD_ADVANCE_PYTHON)"
@@ -203,16 +211,16 @@ cmake -S consumer -B consumer/build >consumer.log 2>&1 && cmake --build consumer
 echo "cmake package: $(sed -n "s/^opencv_lsd_advance_DIR:[A-Z]*=//p" consumer/build/CMakeCache.txt)"
 echo "cmake program: $(consumer/build/lsd_advance_consumer "$image")"
 if [ "$with_samples" = ON ]; then
-  echo "sample program: $(command -v lsd_advance_detect)"
-  lsd_advance_detect --input=building.jpg | sed -n "s/^segments \/ image: */sample segments: /p"
+  echo "sample program: $(command -v lsd_advance_demo)"
+  lsd_advance_demo building.jpg --output=demo.png | sed -n "s/^LSDAdvance: *\([0-9]*\) segments.*/sample segments: \1/p"
 fi
 if [ "$with_python" = ON ]; then
   python3 -c "import sys, cv2, lsd_advance; print(\"python module:\", len(lsd_advance.createLSDAdvance().detect(cv2.imread(sys.argv[1], cv2.IMREAD_GRAYSCALE))), lsd_advance.__file__)" "$image"
-  python3 "$prefix/share/opencv4/samples/lsd_advance/python/lsd_advance_detect.py" --input=building.jpg \
-    | sed -n "s/^segments \/ image: */python sample segments: /p"
+  python3 "$prefix/share/opencv4/samples/lsd_advance/python/lsd_advance_detect.py" building.jpg --output=lines.png \
+    | sed -n "s/^\([0-9]*\) line segments in building.jpg.*/python sample segments: \1/p"
 fi
 ' check_env "$SETUP" "$PREFIX" "$WITH_SAMPLES" "$WITH_PYTHON" 2>&1)" \
-  || fail "the commands of README \"Another prefix\" failed in a clean shell:"$'\n'"$out"
+  || fail "the commands of doc/building.md \"Another prefix\" failed in a clean shell:"$'\n'"$out"
 echo "$out"
 expect_line() { grep -qxF -- "$1" <<<"$out" || fail "expected the line '$1' in a clean shell with $SETUP sourced; got:"$'\n'"$out"; }
 expect_line "pkg-config: $pc_version from $PREFIX"
@@ -221,12 +229,12 @@ expect_line "pkg-config program loads: $(readlink -f "$LIB")"
 expect_line "cmake package: $PKGDIR"
 expect_line "cmake program: $cmake_count line segments in $IMAGE"
 if [ "$WITH_SAMPLES" = "ON" ]; then
-  expect_line "sample program: $PREFIX/$BINDIR/lsd_advance_detect"
-  expect_line "sample segments: $cmake_count.0"
+  expect_line "sample program: $PREFIX/$BINDIR/lsd_advance_demo"
+  expect_line "sample segments: $cmake_count"
 fi
 if [ "$WITH_PYTHON" = "ON" ]; then
   expect_line "python module: $cmake_count $PYDIR/lsd_advance/__init__.py"
-  expect_line "python sample segments: $cmake_count.0"
+  expect_line "python sample segments: $cmake_count"
 fi
 
 step "passed: install of $BUILD works for CMake, pkg-config and Python consumers, and with its environment script"

@@ -8,7 +8,9 @@
 # In-tree build check: builds a minimal OpenCV 4.10 (the `opencv` source package of Debian 13,
 # trixie, with its contrib) with this checkout as an extra module, exactly as opencv_contrib
 # modules are built, then runs the in-tree opencv_test_lsd_advance, imports the Python bindings
-# and runs the Python tests (python/test) on that cv2. With the standalone build and tests on
+# and runs the Python tests of misc/python/test on that cv2: with OpenCV's own runner
+# (modules/python/test/test.py, which finds them through opencv_python_tests.cfg), then with the
+# tests of the samples and scripts (scripts/test_python.sh). With the standalone build and tests on
 # Debian 12's OpenCV 4.6 (scripts/test.sh), both ends of the supported versions are tested.
 # Fetching the source changes nothing in the system's apt set-up (scripts/fetch_opencv_source.sh
 # --suite: a private apt state with trixie's source index only).
@@ -52,7 +54,7 @@ echo "OpenCV source: $OPENCV_SOURCE_DIR"
 # build system rebuilds exactly what changed; files gone from the checkout are removed.
 MODDIR="$SCRATCH/modules/lsd_advance"
 mkdir -p "$MODDIR"
-MODULE_ENTRIES=(CMakeLists.txt cmake include misc src test perf samples doc)
+MODULE_ENTRIES=(CMakeLists.txt cmake include misc src test perf samples apps doc)
 ( cd "$MODDIR" && find . -type f ) | while IFS= read -r f; do
   [ -f "$REPO/$f" ] || rm -f "$MODDIR/$f"
 done
@@ -70,7 +72,7 @@ BUILD="$SCRATCH/opencv-build"
 BUILD_LIST="core,imgproc,imgcodecs,videoio,highgui,features2d,flann,calib3d,video,ts,ximgproc,line_descriptor,lsd_advance"
 PY_ARGS=(-DBUILD_opencv_python3=OFF -DBUILD_opencv_python2=OFF)
 if [ "$WITH_PYTHON" = 1 ]; then
-  BUILD_LIST="$BUILD_LIST,python3"
+  BUILD_LIST="$BUILD_LIST,python3,python_tests"
   PY_ARGS=(-DBUILD_opencv_python3=ON -DBUILD_opencv_python2=OFF
            -DPYTHON3_EXECUTABLE=/usr/bin/python3 -DPYTHON_DEFAULT_EXECUTABLE=/usr/bin/python3)
 fi
@@ -145,7 +147,21 @@ if [ "$WITH_PYTHON" = 1 ]; then
   PYTHONPATH="$BUILD/python_loader" LD_LIBRARY_PATH="$BUILD/lib" /usr/bin/python3 -c \
     'import cv2; f = cv2.ximgproc.createLSDAdvance; print("cv2", cv2.__version__, "from", cv2.__file__, "->", f.__doc__.splitlines()[0] if f.__doc__ else f)'
 
-  section "Python tests on the in-tree cv2 (python/test with LSD_ADVANCE_PY_BACKEND=cv2)"
+  section "Python tests by OpenCV's runner (misc/python/test, found through opencv_python_tests.cfg)"
+  grep -qx '.*modules/lsd_advance/misc/python/test' "$BUILD/opencv_python_tests.cfg" \
+    || { echo "ERROR: $BUILD/opencv_python_tests.cfg does not list the module's misc/python/test" >&2; exit 1; }
+  runner_log="$SCRATCH/python_runner.log"
+  runner_rc=0
+  ( cd "$BUILD" && OPENCV_PYTEST_FILTER=test_lsd_advance PYTHONPATH="$BUILD/python_loader" LD_LIBRARY_PATH="$BUILD/lib" \
+      PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 "$OPENCV_SOURCE_DIR/modules/python/test/test.py" \
+      --repo "$OPENCV_SOURCE_DIR" ) 2>&1 | tee "$runner_log" || runner_rc=${PIPESTATUS[0]}
+  ran="$(sed -nE 's/^Ran ([0-9]+) tests? in .*/\1/p' "$runner_log" | tail -n1)"
+  if [ "${runner_rc:-0}" -ne 0 ] || [ "${ran:-0}" -eq 0 ]; then
+    echo "ERROR: OpenCV's Python test runner failed or ran no test (exit ${runner_rc:-0}, ${ran:-0} tests)" >&2
+    exit 1
+  fi
+
+  section "Python tests, with those of the samples and scripts, on the in-tree cv2 (scripts/test_python.sh, LSD_ADVANCE_PY_BACKEND=cv2)"
   LSD_ADVANCE_PY_BACKEND=cv2 PYTHONPATH="$BUILD/python_loader" LD_LIBRARY_PATH="$BUILD/lib" \
     bash "$REPO/scripts/test_python.sh" "$BUILD"
 fi

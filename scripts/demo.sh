@@ -3,10 +3,11 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 #
-# Usage: bash scripts/demo.sh [lsd_advance_demo options, e.g. --image=my.jpg --output=out.png]
+# Usage: bash scripts/demo.sh [lsd_advance_demo arguments, e.g. my.jpg --output=out.png]
 #
-# Installs the Debian dependencies, builds the library and samples (no tests: no OpenCV source
-# needed) and runs the lsd_advance_demo sample on OpenCV's building.jpg (from opencv-doc).
+# Installs the Debian dependencies, builds the library and the samples (no tests: no OpenCV
+# source needed) and runs the demo, samples/lsd_advance_demo.cpp, on OpenCV's building.jpg (from
+# opencv-doc): LSD and LSDAdvance side by side in build/lsd_advance_demo.png.
 #
 # Environment:
 #   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)

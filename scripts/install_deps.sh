@@ -13,10 +13,11 @@
 # not root.
 set -euo pipefail
 
-# The Python module (pybind11) and its tests; doxygen + bibtex (texlive-binaries) for scripts/docs.sh.
+# The Python module (OpenCV's binding generator: Python headers, numpy) and its tests; doxygen +
+# bibtex (texlive-binaries) for scripts/docs.sh.
 PACKAGES=(build-essential cmake pkg-config dpkg-dev
           libopencv-dev libopencv-contrib-dev opencv-doc
-          python3-dev python3-numpy python3-opencv python3-pytest pybind11-dev python3-pybind11
+          python3-dev python3-numpy python3-opencv python3-pytest
           doxygen texlive-binaries)
 if [ "${1:-}" = "--intree" ]; then
   # OpenCV's own build (Debian's source package has no 3rdparty/: use system codecs)

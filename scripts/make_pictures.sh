@@ -5,14 +5,14 @@
 #
 # Usage: bash scripts/make_pictures.sh [DATA_DIR]
 #
-# Regenerates every picture of the documentation in doc/pics/ (and only this script writes
-# there; the tutorial's commands write to out/): the demo picture of README, the drawings of
-# the three stages on building.jpg and on YorkUrban's P1020831.jpg, the LBD matches of
-# graf1/graf3, and the YorkUrban benchmark charts, whose table it prints (doc/pictures.md shows
-# it). Each command is the one doc/pictures.md prints next to its picture. DATA_DIR (YorkUrban)
-# defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository. Builds the
-# samples first when the build directory has none. Takes a few minutes (the benchmark runs
-# every method 3 times on 51 images). Afterwards `git status doc/pics` shows what changed.
+# Regenerates the pictures of the documentation in doc/pics/ that are not measurements (the
+# tutorial's commands write to out/; the charts of measurements, doc/pics/results_*.svg, come
+# with doc/results.md from scripts/benchmark.sh): the demo picture of README, the drawings of the
+# three stages on building.jpg and on YorkUrban's P1020831.jpg, and the LBD matches of
+# graf1/graf3. Each command is the one doc/pictures.md prints next to its picture. DATA_DIR
+# (YorkUrban) defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository.
+# Builds the programs first when the build directory has none. Takes a few seconds. Afterwards
+# `git status doc/pics` shows what changed.
 #
 # Environment:
 #   LSD_ADVANCE_BUILD_DIR  build directory (default: <repo>/build)
@@ -25,7 +25,7 @@ JOBS="${LSD_ADVANCE_JOBS:-2}"
 DATA="$(cd "${1:-${LSD_ADVANCE_DATA_DIR:-$REPO/../shared/data}}" && pwd)"
 [ -d "$DATA/yorkurban" ] || { echo "ERROR: no yorkurban/ in $DATA" >&2; exit 1; }
 
-SAMPLES=(lsd_advance_demo lsd_advance_detect lsd_advance_lbd_matching lsd_advance_benchmark)
+SAMPLES=(lsd_advance_demo lsd_advance_detect lsd_advance_lbd_matching)
 for s in "${SAMPLES[@]}"; do
   if [ ! -x "$BUILD/$s" ]; then
     bash "$REPO/scripts/install_deps.sh"
@@ -42,15 +42,12 @@ mkdir -p doc/pics
 run() { echo "+ $*" >&2; "$@"; }
 YORKURBAN="$DATA/yorkurban"
 
-run "$BUILD/lsd_advance_demo" --output=doc/pics/building_lsd_vs_lsd_advance.jpg >/dev/null
+run "$BUILD/lsd_advance_demo" building.jpg --output=doc/pics/building_lsd_vs_lsd_advance.jpg >/dev/null
 run "$BUILD/lsd_advance_detect" --input=building.jpg --output=doc/pics --draw=filter,groups --ext=jpg --no-segments >/dev/null
 run "$BUILD/lsd_advance_detect" --input=building.jpg --output=doc/pics --draw=merge --zoom=150,60,300,200 --ext=jpg \
   --no-segments >/dev/null
 run "$BUILD/lsd_advance_detect" --input="$YORKURBAN/images/P1020831.jpg" --output=doc/pics --draw=stages --ext=jpg \
   --no-segments >/dev/null
-run "$BUILD/lsd_advance_lbd_matching" graf1.png graf3.png -H=H1to3p.xml --draw=doc/pics/lbd_matches_graf.jpg >/dev/null
-run "$BUILD/lsd_advance_benchmark" --data="$YORKURBAN" \
-  --methods=lsd,fld,fld_merge,edlines,plvins,lsdadvance_paper,lsdadvance_base,lsdadvance --repeats=3 \
-  --chart=doc/pics/yorkurban
+run "$BUILD/lsd_advance_lbd_matching" graf1.png graf3.png -H=H1to3p.xml -d=doc/pics/lbd_matches_graf.jpg >/dev/null
 
 echo "[make_pictures] wrote the pictures of doc/pics (git status doc/pics shows what changed)" >&2

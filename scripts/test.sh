@@ -8,8 +8,8 @@
 # Installs the Debian dependencies, fetches Debian's OpenCV source package of the installed
 # version (for OpenCV's test framework `ts`, which Debian does not package), builds the module
 # standalone with tests and the Python module, runs every unit test of opencv_test_lsd_advance,
-# the Python tests and the tests of the sample programs (scripts/test_python.sh: python/test and
-# samples/test, the error paths of every C++ and Python sample) and a short perf smoke run of
+# the Python tests and the tests of the programs and scripts (scripts/test_python.sh:
+# misc/python/test, apps/lsd_advance_bench/test and scripts/test) and a short perf smoke run of
 # opencv_perf_lsd_advance. Ends with the line `tests: N passed, M failed` (all of them together);
 # exits non-zero on any failure.
 #

@@ -5,18 +5,20 @@
 #
 # Usage: bash scripts/test_python.sh <build dir>
 #
-# Runs the Python tests (python/test, pytest) on the module of a standalone build
-# (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), comparing with the build's C++ samples,
-# and the tests of the sample programs (samples/test: error paths, folder runs and drawings of
-# the C++ and Python samples). Prints `python tests: N passed, M failed` last (both folders);
-# exits non-zero when a test fails or errors.
+# Runs, with pytest, the Python tests of the bindings (misc/python/test, where OpenCV's own runner
+# finds them in-tree; OpenCV's tests_common from the build's OpenCV source tree) on the module of a
+# standalone build (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), the tests of the programs
+# (apps/lsd_advance_bench/test: the apps' error paths and folder runs, their method files, the C++
+# and Python samples) and of the documentation's figure check (scripts/test/). Prints
+# `python tests: N passed, M failed` last (all folders); exits non-zero when a test fails or
+# errors.
 #
 # Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
 # OpenCV build dir of an in-tree build, whose cv2 the caller puts on PYTHONPATH (and
-# LD_LIBRARY_PATH) and whose bin/example_lsd_advance_* samples are compared with;
-# LSD_ADVANCE_SAMPLE_PREFIX (the C++ samples' path without their name), LSD_ADVANCE_DETECT_SAMPLE /
-# LSD_ADVANCE_LBD_SAMPLE override the samples; OPENCV_SAMPLES_DATA_PATH (default: Debian's opencv-doc data);
-# CI=true makes missing data or samples fail instead of skip.
+# LD_LIBRARY_PATH) and whose bin/example_lsd_advance_* samples are run (the apps are built
+# standalone only: their tests skip); LSD_ADVANCE_SAMPLE_PREFIX (the C++ programs' path without
+# their name) overrides where the programs are; OPENCV_SAMPLES_DATA_PATH (default: Debian's
+# opencv-doc data); CI=true makes missing data or programs fail instead of skip.
 set -euo pipefail
 
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -30,23 +32,34 @@ if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ] && \
   exit 1
 fi
 
+# OpenCV's tests_common (NewOpenCVTests): from the standalone build's OPENCV_SOURCE_DIR, or from
+# the source tree of the OpenCV build.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$BUILD/CMakeCache.txt"; }
+OPENCV_TREE="$(cache_value OPENCV_SOURCE_DIR)"
+[ -n "$OPENCV_TREE" ] || OPENCV_TREE="$(cache_value CMAKE_HOME_DIRECTORY)"
+if [ ! -f "$OPENCV_TREE/modules/python/test/tests_common.py" ]; then
+  echo "ERROR: no OpenCV source tree with modules/python/test/tests_common.py for $BUILD ('$OPENCV_TREE')" >&2
+  echo "python tests: 0 passed, 1 failed"
+  exit 1
+fi
+export PYTHONPATH="$OPENCV_TREE/modules/python/test${PYTHONPATH:+:$PYTHONPATH}"
+
 if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ]; then
-  export PYTHONPATH="$BUILD/python${PYTHONPATH:+:$PYTHONPATH}"
+  export PYTHONPATH="$BUILD/python:$PYTHONPATH"
   SAMPLE_PREFIX="$BUILD/"
 else
   SAMPLE_PREFIX="$BUILD/bin/example_lsd_advance_"  # an OpenCV build dir
 fi
 export OPENCV_SAMPLES_DATA_PATH="${OPENCV_SAMPLES_DATA_PATH:-/usr/share/doc/opencv-doc/examples/data}"
 export LSD_ADVANCE_SAMPLE_PREFIX="${LSD_ADVANCE_SAMPLE_PREFIX:-$SAMPLE_PREFIX}"
-export LSD_ADVANCE_DETECT_SAMPLE="${LSD_ADVANCE_DETECT_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_detect}"
-export LSD_ADVANCE_LBD_SAMPLE="${LSD_ADVANCE_LBD_SAMPLE:-${SAMPLE_PREFIX}lsd_advance_lbd_matching}"
 export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in the source tree
 
 REPORT="$(mktemp)"
 trap 'rm -f "$REPORT"' EXIT
 rc=0
 # -p no:cacheprovider: write nothing into the source tree.
-"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/python/test" "$REPO/samples/test" || rc=$?
+"$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/misc/python/test" \
+  "$REPO/apps/lsd_advance_bench/test" "$REPO/scripts/test" || rc=$?
 
 read -r passed failed < <("$PYTHON" - "$REPORT" <<'PY'
 import sys

@@ -2,9 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Stage 0: input conversion (images and segment arrays) and the base detectors: OpenCV's LSD,
-// FastLineDetector and EDLines (EdgeDrawing), used as they are, and the module's own LSD
-// (fast_lsd.cpp).
+// Stage 0, the base detectors: OpenCV's LSD, FastLineDetector and EDLines (EdgeDrawing), used as
+// they are, and the module's own LSD (fast_lsd.cpp).
 
 #include "precomp.hpp"
 #include "fast_lsd.hpp"
@@ -15,27 +14,6 @@ namespace cv {
 namespace ximgproc {
 namespace lsda {
 
-Mat toGray8U(InputArray image)
-{
-    if (image.empty())
-        CV_Error(Error::StsBadArg, "LSDAdvance: the input image is empty; expected a non-empty "
-                                   "CV_8UC1 (gray), CV_8UC3 (BGR) or CV_8UC4 (BGRA) image");
-    const int type = image.type();
-    if (type == CV_8UC1)
-        return image.getMat();
-    Mat gray;
-    if (type == CV_8UC3)
-        cvtColor(image, gray, COLOR_BGR2GRAY);
-    else if (type == CV_8UC4)
-        cvtColor(image, gray, COLOR_BGRA2GRAY);
-    else
-        CV_Error_(Error::BadDepth,
-                  ("LSDAdvance: unsupported image type %s (%dx%d); accepted: CV_8UC1 (gray), "
-                   "CV_8UC3 (BGR), CV_8UC4 (BGRA)",
-                   typeToString(type).c_str(), image.cols(), image.rows()));
-    return gray;
-}
-
 namespace {
 
 class LsdBase CV_FINAL : public BaseSegmentDetector
@@ -43,12 +21,21 @@ class LsdBase CV_FINAL : public BaseSegmentDetector
 public:
     explicit LsdBase(const LSDAdvance::LSDParams& p)
         : lsd(createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
-                                        p.logEps, p.densityThreshold, p.numBins))
+                                        p.logEps, p.densityThreshold, p.numBins)),
+          scale(p.scale)
     {}
-    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE { lsd->detect(gray, segments); }
+    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
+    {
+        // LSD's resize throws on an image that scales to no pixel; such an image has no segment.
+        if (saturate_cast<int>(gray.cols * scale) > 0 && saturate_cast<int>(gray.rows * scale) > 0)
+            lsd->detect(gray, segments);
+        else
+            segments.clear();
+    }
 
 private:
     Ptr<LineSegmentDetector> lsd;
+    double scale;
 };
 
 class FastLsdBase CV_FINAL : public BaseSegmentDetector
@@ -144,25 +131,6 @@ void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments)
         if (balance < 0)
             s = Vec4f(s[2], s[3], s[0], s[1]);
     }
-}
-
-void toSegments(InputArray lines, const char* what, std::vector<Vec4f>& segments)
-{
-    segments.clear();
-    if (lines.empty())
-        return;
-    const Mat m = lines.getMat();
-    if (m.type() != CV_32FC4 || (m.rows != 1 && m.cols != 1))
-        CV_Error_(Error::StsBadArg, ("%s must be an N x 1 or 1 x N CV_32FC4 array (std::vector<Vec4f>), got %s %dx%d",
-                                     what, typeToString(m.type()).c_str(), m.cols, m.rows));
-    m.reshape(4, (int)m.total()).copyTo(segments);
-}
-
-std::vector<Vec4f> toSegments(InputArray lines, const char* what)
-{
-    std::vector<Vec4f> segments;
-    toSegments(lines, what, segments);
-    return segments;
 }
 
 }}} // namespace cv::ximgproc::lsda

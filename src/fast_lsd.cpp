@@ -111,12 +111,7 @@ FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
       angleTolerance(p.angleTolerance), logEps(p.logEps), densityThreshold(p.densityThreshold),
       numBins(p.numBins)
 {
-    CV_CheckGT(scale, 0.0, "FastLsd: scale must be positive");
-    CV_CheckGT(angleTolerance, 0.0, "FastLsd: angle tolerance must be in (0, 180) degrees");
-    CV_CheckLT(angleTolerance, 180.0, "FastLsd: angle tolerance must be in (0, 180) degrees");
-    CV_CheckGE(quant, 0.0, "FastLsd: quant must not be negative");
-    CV_CheckGE(numBins, 1, "FastLsd: the number of bins must be at least 1");
-    CV_CheckLE(numBins, 65536, "FastLsd: the number of bins must be at most 65536");
+    // The parameters are in their ranges: those of the table of parameters.hpp, which every setter checks.
 }
 
 void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)

@@ -20,7 +20,7 @@ namespace lsda {
 //! (x1, y1, x2, y2), pixel centres at integer coordinates, brighter side on the left). Every buffer
 //! is kept by the object and reused, so that a sequence of frames of one size allocates nothing
 //! once warm. Not safe to call from two threads at once.
-class CV_EXPORTS FastLsd
+class FastLsd
 {
 public:
     explicit FastLsd(const LSDAdvance::LSDParams& params);

@@ -2,7 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Stage 1: adaptive length suppression with the inter-frame count factor.
+// Stage 1: adaptive length suppression with the inter-frame count factor: its thresholds, its
+// modes (the frame's alpha) and its strong segments.
 
 #include "precomp.hpp"
 
@@ -55,11 +56,6 @@ double countTrackingAlpha(int provisional, int keptPrevious, int keptBeforePrevi
         return 1.0;
     const double r = (provisional - recent) / recent;
     return std::min(std::max(1.0 + 0.5 * r, 0.8), 1.2);
-}
-
-int countAtLeast(const std::vector<Vec4f>& segments, double minLength)
-{
-    return countLongOrStrong(segments, std::vector<float>(), minLength, 0.0);
 }
 
 namespace {
@@ -115,12 +111,6 @@ double adaptiveMinResponse(const std::vector<float>& responses, double alpha, in
     return thresholdOf(sum, sumSq, (double)responses.size(), alpha, rule);
 }
 
-void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
-                       std::vector<Vec4f>& kept, std::vector<int>* keptFrom)
-{
-    keepLongOrStrong(segments, std::vector<float>(), minLength, 0.0, kept, keptFrom);
-}
-
 void keepLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
                       double minLength, double minResponse, std::vector<Vec4f>& kept, std::vector<int>* keptFrom)
 {
@@ -146,6 +136,55 @@ int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<floa
     for (size_t i = 0; i < segments.size(); i++)
         count += longOrStrong(segments, responses, i, minLength, minResponse);
     return count;
+}
+
+void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& p)
+{
+    params = p;
+    const bool filtering = p.lengthFilterMode != LSDAdvance::LENGTH_FILTER_NONE;
+    unitMinLength = filtering ? p.lengthThresholdScale * adaptiveMinLength(base, 1.0, p.lengthThresholdRule) : 0.0;
+    // The responses of the base segments give the threshold of the strong ones, as their lengths
+    // give the length threshold; computed only when strong segments are kept.
+    strong = filtering && p.keepStrongSegments && gray;
+    baseResponses.clear();
+    if (strong)
+        lineResponses(*gray, base, baseResponses);
+    unitMinResponse = strong ? p.lengthThresholdScale * adaptiveMinResponse(baseResponses, 1.0, p.lengthThresholdRule)
+                             : 0.0;
+}
+
+void LengthFilter::apply(const std::vector<Vec4f>& in, bool inIsBase, const Mat* gray, const KeptCounts& history,
+                         std::vector<Vec4f>& kept, std::vector<int>& keptFrom, LSDAdvanceStats& stats)
+{
+    if (params.lengthFilterMode == LSDAdvance::LENGTH_FILTER_NONE)
+    {
+        kept = in;
+        keptFrom.resize(in.size());
+        for (size_t i = 0; i < in.size(); i++)
+            keptFrom[i] = (int)i;
+        stats.filteredSegments = (int)in.size();
+        return;
+    }
+    // Fused segments have responses of their own; the base segments' are known.
+    if (strong && !inIsBase)
+        lineResponses(*gray, in, mergedResponses);
+    const std::vector<float>& responses = strong && !inIsBase ? mergedResponses : baseResponses;
+    double alpha = 1.0;  // the first two frames of a sequence, and LENGTH_FILTER_ADAPTIVE
+    if (history.frames >= 2)
+    {
+        if (params.lengthFilterMode == LSDAdvance::LENGTH_FILTER_INTERFRAME)
+            alpha = interFrameAlpha(history.previous, history.beforePrevious);
+        else if (params.lengthFilterMode == LSDAdvance::LENGTH_FILTER_INTERFRAME_CONTINUOUS)
+            alpha = continuousInterFrameAlpha(history.previous, history.beforePrevious);
+        else if (params.lengthFilterMode == LSDAdvance::LENGTH_FILTER_COUNT_TRACKING)
+            alpha = countTrackingAlpha(countLongOrStrong(in, responses, unitMinLength, unitMinResponse),
+                                       history.previous, history.beforePrevious);
+    }
+    stats.alpha = alpha;
+    stats.minLength = alpha * unitMinLength;
+    stats.minResponse = responses.empty() ? 0.0 : alpha * unitMinResponse;
+    keepLongOrStrong(in, responses, stats.minLength, stats.minResponse, kept, &keptFrom);
+    stats.filteredSegments = (int)kept.size();
 }
 
 }}} // namespace cv::ximgproc::lsda

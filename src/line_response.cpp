@@ -70,8 +70,9 @@ bool cutByBorder(const Vec4f& s, Size size)
     return near(s[0], size.width) || near(s[2], size.width) || near(s[1], size.height) || near(s[3], size.height);
 }
 
-} // namespace
-
+// Mean gray-level step across the segment, its left (brighter) side minus its right side, 1 px
+// either side of its centre line, sampled at the centre of each unit step (bilinear, coordinates
+// clamped into the image); negative steps count 0. Gray levels, in [0, 255].
 double meanContrast(const Mat& gray, const Vec4f& s)
 {
     CV_CheckTypeEQ(gray.type(), CV_8UC1, "meanContrast samples a gray image");
@@ -93,6 +94,8 @@ double meanContrast(const Mat& gray, const Vec4f& s)
     const double sum = positiveSteps(gray, first, step, left, samples, inside);
     return sum / samples;
 }
+
+} // namespace
 
 void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::vector<float>& responses)
 {

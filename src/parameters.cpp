@@ -2,17 +2,15 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// What follows from the parameter tables of parameters.hpp: the defaults, the validation, and
-// the persistence (write/read, with names for enumerated values and warnings on unknown keys).
+// What follows from the parameter tables of parameters.hpp: the defaults, the presets, the
+// validation, and the persistence (write/read, with names for enumerated values and warnings on
+// unknown keys).
 
 #include "precomp.hpp"
 #include "parameters.hpp"
 #include "opencv2/core/utils/logger.hpp"
 
-#include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <type_traits>
 
 namespace cv {
 namespace ximgproc {
@@ -38,114 +36,7 @@ LSDAdvance::FLDParams::FLDParams()
 
 namespace lsda {
 
-Range Range::real(double lo, Bound loBound, double hi, Bound hiBound, const char* unit)
-{
-    Range r;
-    r.kind = REAL;
-    r.lo = lo;
-    r.hi = hi;
-    r.loBound = loBound;
-    r.hiBound = hiBound;
-    r.unit = unit;
-    return r;
-}
-
-Range Range::enumOf(const char* const* names, int count)
-{
-    Range r;
-    r.kind = ENUM;
-    r.hi = count - 1;
-    r.names = names;
-    r.count = count;
-    return r;
-}
-
-Range Range::flag()
-{
-    Range r;
-    r.kind = FLAG;
-    r.hi = 1;
-    return r;
-}
-
-Range Range::oneOf(const int* values, int count)
-{
-    Range r;
-    r.kind = LIST;
-    r.values = values;
-    r.count = count;
-    return r;
-}
-
-Range Range::orValue(double value, const char* meaning) const
-{
-    Range r = *this;
-    r.hasExtra = true;
-    r.extra = value;
-    r.extraMeaning = meaning;
-    return r;
-}
-
-bool Range::accepts(double v) const
-{
-    if (hasExtra && v == extra)
-        return true;
-    switch (kind)
-    {
-    case ENUM:
-    case FLAG:
-        return v >= lo && v <= hi && v == std::floor(v);
-    case LIST:
-        return std::find(values, values + count, v) != values + count;
-    default:
-        return std::isfinite(v) && (loBound == OPEN ? v > lo : v >= lo) && (hiBound == OPEN ? v < hi : v <= hi);
-    }
-}
-
-std::string Range::describe() const
-{
-    std::string text;
-    switch (kind)
-    {
-    case ENUM:
-        text = "one of ";
-        for (int k = 0; k < count; k++)
-            text += format("%s%s (%d)", k == 0 ? "" : ", ", names[k], k);
-        break;
-    case FLAG:
-        text = "0 (false) or 1 (true)";
-        break;
-    case LIST:
-        for (int k = 0; k < count; k++)
-            text += format("%s%d", k == 0 ? "" : (k + 1 == count ? " or " : ", "), values[k]);
-        break;
-    default:
-        text = format("a finite number in %c%g, %g%c%s", loBound == OPEN ? '(' : '[', lo, hi,
-                      hiBound == OPEN ? ')' : ']', unit);
-    }
-    if (hasExtra)
-        text += format(", or %g (%s)", extra, extraMeaning);
-    return text;
-}
-
 namespace {
-
-template <class S, class T, T S::*member>
-double getMember(const S& s)
-{
-    return (double)(s.*member);
-}
-
-template <class S, class T, T S::*member>
-void setMember(S& s, double value)
-{
-    s.*member = (T)value;
-}
-
-// A row of a table as a Field of struct S.
-#define LSDA_FIELD_OF(S, type, field, range, legacyKey)                                                           \
-    Field<S>{ #field, legacyKey, range, !std::is_floating_point<type>::value, &getMember<S, type, &S::field>,      \
-              &setMember<S, type, &S::field> },
 
 // Enumerated values are written by name.
 template <class S>
@@ -283,37 +174,40 @@ const char* const kEdLinesKey = "edLines";
 
 } // namespace
 
-#define LSDA_OWN_FIELD(type, field, Accessor, value, range, legacyKey) \
-    LSDA_FIELD_OF(LSDAdvance::Params, type, field, range, legacyKey)
-
-const std::vector<Field<LSDAdvance::Params> >& fieldsOf(const LSDAdvance::Params*)
+// The most accurate configuration is the defaults; the fastest is the default base at OpenCV LSD's
+// scale 0.8 (the fastest measured set-up whose F stays above LSD's, doc/performance.md).
+Parameters presetParameters(int preset)
 {
-    static const std::vector<Field<LSDAdvance::Params> > fields = { LSDA_PARAMS(LSDA_OWN_FIELD) };
-    return fields;
-}
-
-#define LSDA_LSD_FIELD(type, field, value, range, legacyKey) \
-    LSDA_FIELD_OF(LSDAdvance::LSDParams, type, field, range, legacyKey)
-const std::vector<Field<LSDAdvance::LSDParams> >& fieldsOf(const LSDAdvance::LSDParams*)
-{
-    static const std::vector<Field<LSDAdvance::LSDParams> > fields = { LSDA_LSD_PARAMS(LSDA_LSD_FIELD) };
-    return fields;
-}
-
-#define LSDA_FLD_FIELD(type, field, value, range, legacyKey) \
-    LSDA_FIELD_OF(LSDAdvance::FLDParams, type, field, range, legacyKey)
-const std::vector<Field<LSDAdvance::FLDParams> >& fieldsOf(const LSDAdvance::FLDParams*)
-{
-    static const std::vector<Field<LSDAdvance::FLDParams> > fields = { LSDA_FLD_PARAMS(LSDA_FLD_FIELD) };
-    return fields;
-}
-
-#define LSDA_EDLINES_FIELD(type, field, range, legacyKey) \
-    LSDA_FIELD_OF(EdgeDrawing::Params, type, field, range, legacyKey)
-const std::vector<Field<EdgeDrawing::Params> >& fieldsOf(const EdgeDrawing::Params*)
-{
-    static const std::vector<Field<EdgeDrawing::Params> > fields = { LSDA_EDLINES_PARAMS(LSDA_EDLINES_FIELD) };
-    return fields;
+    Parameters p;
+    switch (preset)
+    {
+    case LSDAdvance::PRESET_MOST_ACCURATE:
+        break;
+    case LSDAdvance::PRESET_FASTEST:
+        p.lsd.scale = 0.8;
+        break;
+    case LSDAdvance::PRESET_PAPER:
+        // OpenCV's LSD with its own set-up (createLineSegmentDetector's defaults), the paper's base.
+        p.own.baseDetector = LSDAdvance::BASE_LSD;
+        p.lsd.refine = LSD_REFINE_STD;
+        p.lsd.scale = 0.8;
+        p.own.lengthFilterMode = LSDAdvance::LENGTH_FILTER_INTERFRAME;
+        p.own.lengthThresholdRule = LSDAdvance::LENGTH_THRESHOLD_PAPER;
+        p.own.stageOrder = LSDAdvance::FILTER_THEN_MERGE;
+        p.own.mergeStrategy = LSDAdvance::MERGE_BASELINES;
+        p.own.proximityRatio = 0.1;
+        break;
+    case LSDAdvance::PRESET_SEQUENCE:
+        p.own.lengthFilterMode = LSDAdvance::LENGTH_FILTER_COUNT_TRACKING;
+        // A front end keeps its N best lines: short strong ones give it more correct LBD matches
+        // at an equal line budget (doc/matching.md).
+        p.own.keepStrongSegments = true;
+        break;
+    default:
+        CV_Error_(Error::StsOutOfRange, ("createLSDAdvance: preset must be %s, got %d",
+                                         Range::enumOf(kPresets).describe().c_str(), preset));
+    }
+    return p;
 }
 
 void validate(const LSDAdvance::Params& params) { validateFields(params, ""); }

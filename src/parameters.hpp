@@ -2,13 +2,15 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Every parameter of LSDAdvance is declared once: a row of one of the tables below. From the rows
-// follow the defaults (Params(), LSDParams(), FLDParams()), the validation of the setters, of
-// setParams() and of read(), write() and read() themselves, the getters and setters of the
-// implementation and of the standalone Python module, and the tests' parameter lists (the fuzzer
-// takes its list from write()). The public header declares each row's field and, for
-// LSDAdvance::Params, its getter and setter: OpenCV's binding generator and Doxygen read that
-// header as text, so these declarations cannot be generated.
+// Every parameter of LSDAdvance is declared once: a row of one of the tables below, with its
+// default and its range. From the rows follow the defaults (Params(), LSDParams(), FLDParams()),
+// the validation of the setters, of setParams() and of read(), write() and read() themselves, the
+// getters and setters of the implementation, and the tests' parameter lists (the fuzzer takes its
+// list from write()). The public header declares each row's field and, for LSDAdvance::Params,
+// its getter and setter: OpenCV's binding generator and Doxygen read that header as text, so these
+// declarations cannot be generated; a test checks the defaults and ranges it documents against
+// the rows. Header-only but for the defaults and persistence (parameters.cpp): the tests use the
+// same rows without any of it being exported.
 
 #ifndef OPENCV_LSD_ADVANCE_PARAMETERS_HPP
 #define OPENCV_LSD_ADVANCE_PARAMETERS_HPP
@@ -16,7 +18,10 @@
 #include "opencv2/lsd_advance/lsd_advance.hpp"
 #include "opencv2/imgproc.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 // LSDAdvance::Params: X(type, field, Accessor, default, range, key in files of version 4.6.0 or nullptr)
@@ -118,7 +123,7 @@ enum Bound
 };
 
 //! The values a parameter accepts, and the names files give them.
-struct CV_EXPORTS Range
+struct Range
 {
     enum Kind
     {
@@ -128,20 +133,95 @@ struct CV_EXPORTS Range
         LIST   //!< one of values
     };
 
-    static Range real(double lo, Bound loBound, double hi, Bound hiBound, const char* unit = "");
+    static Range real(double lo, Bound loBound, double hi, Bound hiBound, const char* unit = "")
+    {
+        Range r;
+        r.kind = REAL;
+        r.lo = lo;
+        r.hi = hi;
+        r.loBound = loBound;
+        r.hiBound = hiBound;
+        r.unit = unit;
+        return r;
+    }
     template <size_t N>
-    static Range enumOf(const char* const (&names)[N]) { return enumOf(names, (int)N); }
-    static Range enumOf(const char* const* names, int count);
-    static Range flag();
+    static Range enumOf(const char* const (&names)[N])
+    {
+        Range r;
+        r.kind = ENUM;
+        r.hi = (double)N - 1;
+        r.names = names;
+        r.count = (int)N;
+        return r;
+    }
+    static Range flag()
+    {
+        Range r;
+        r.kind = FLAG;
+        r.hi = 1;
+        return r;
+    }
     template <size_t N>
-    static Range oneOf(const int (&values)[N]) { return oneOf(values, (int)N); }
-    static Range oneOf(const int* values, int count);
+    static Range oneOf(const int (&values)[N])
+    {
+        Range r;
+        r.kind = LIST;
+        r.values = values;
+        r.count = (int)N;
+        return r;
+    }
     //! The same range, which also accepts value (with the meaning given).
-    Range orValue(double value, const char* meaning) const;
+    Range orValue(double value, const char* meaning) const
+    {
+        Range r = *this;
+        r.hasExtra = true;
+        r.extra = value;
+        r.extraMeaning = meaning;
+        return r;
+    }
 
-    bool accepts(double value) const;
+    bool accepts(double v) const
+    {
+        if (hasExtra && v == extra)
+            return true;
+        switch (kind)
+        {
+        case ENUM:
+        case FLAG:
+            return v >= lo && v <= hi && v == std::floor(v);
+        case LIST:
+            return std::find(values, values + count, v) != values + count;
+        default:
+            return std::isfinite(v) && (loBound == OPEN ? v > lo : v >= lo) && (hiBound == OPEN ? v < hi : v <= hi);
+        }
+    }
+
     //! What accepts() accepts, for messages: "a finite number in (0, 10] px", "one of A (0), B (1)".
-    std::string describe() const;
+    std::string describe() const
+    {
+        std::string text;
+        switch (kind)
+        {
+        case ENUM:
+            text = "one of ";
+            for (int k = 0; k < count; k++)
+                text += format("%s%s (%d)", k == 0 ? "" : ", ", names[k], k);
+            break;
+        case FLAG:
+            text = "0 (false) or 1 (true)";
+            break;
+        case LIST:
+            for (int k = 0; k < count; k++)
+                text += format("%s%d", k == 0 ? "" : (k + 1 == count ? " or " : ", "), values[k]);
+            break;
+        default:
+            text = format("a finite number in %c%g, %g%c%s", loBound == OPEN ? '(' : '[', lo, hi,
+                          hiBound == OPEN ? ')' : ']', unit);
+        }
+        if (hasExtra)
+            text += format(", or %g (%s)", extra, extraMeaning);
+        return text;
+    }
 
     Kind kind = REAL;
     double lo = 0, hi = 0;
@@ -167,11 +247,59 @@ struct Field
     void (*set)(S&, double);  //!< value already validated
 };
 
-// The rows of each table as Fields (tests iterate over them).
-CV_EXPORTS const std::vector<Field<LSDAdvance::Params> >& fieldsOf(const LSDAdvance::Params*);
-CV_EXPORTS const std::vector<Field<LSDAdvance::LSDParams> >& fieldsOf(const LSDAdvance::LSDParams*);
-CV_EXPORTS const std::vector<Field<LSDAdvance::FLDParams> >& fieldsOf(const LSDAdvance::FLDParams*);
-CV_EXPORTS const std::vector<Field<EdgeDrawing::Params> >& fieldsOf(const EdgeDrawing::Params*);
+template <class S, class T, T S::*member>
+double getMember(const S& s)
+{
+    return (double)(s.*member);
+}
+
+template <class S, class T, T S::*member>
+void setMember(S& s, double value)
+{
+    s.*member = (T)value;
+}
+
+// The rows of each table as Fields (the persistence and the tests iterate over them).
+#define LSDA_FIELD_OF(S, type, field, range, legacyKey)                                                           \
+    Field<S>{ #field, legacyKey, range, !std::is_floating_point<type>::value, &getMember<S, type, &S::field>,      \
+              &setMember<S, type, &S::field> },
+#define LSDA_OWN_FIELD(type, field, Accessor, value, range, legacyKey) \
+    LSDA_FIELD_OF(LSDAdvance::Params, type, field, range, legacyKey)
+#define LSDA_LSD_FIELD(type, field, value, range, legacyKey) \
+    LSDA_FIELD_OF(LSDAdvance::LSDParams, type, field, range, legacyKey)
+#define LSDA_FLD_FIELD(type, field, value, range, legacyKey) \
+    LSDA_FIELD_OF(LSDAdvance::FLDParams, type, field, range, legacyKey)
+#define LSDA_EDLINES_FIELD(type, field, range, legacyKey) \
+    LSDA_FIELD_OF(EdgeDrawing::Params, type, field, range, legacyKey)
+
+inline const std::vector<Field<LSDAdvance::Params> >& fieldsOf(const LSDAdvance::Params*)
+{
+    static const std::vector<Field<LSDAdvance::Params> > fields = { LSDA_PARAMS(LSDA_OWN_FIELD) };
+    return fields;
+}
+
+inline const std::vector<Field<LSDAdvance::LSDParams> >& fieldsOf(const LSDAdvance::LSDParams*)
+{
+    static const std::vector<Field<LSDAdvance::LSDParams> > fields = { LSDA_LSD_PARAMS(LSDA_LSD_FIELD) };
+    return fields;
+}
+
+inline const std::vector<Field<LSDAdvance::FLDParams> >& fieldsOf(const LSDAdvance::FLDParams*)
+{
+    static const std::vector<Field<LSDAdvance::FLDParams> > fields = { LSDA_FLD_PARAMS(LSDA_FLD_FIELD) };
+    return fields;
+}
+
+inline const std::vector<Field<EdgeDrawing::Params> >& fieldsOf(const EdgeDrawing::Params*)
+{
+    static const std::vector<Field<EdgeDrawing::Params> > fields = { LSDA_EDLINES_PARAMS(LSDA_EDLINES_FIELD) };
+    return fields;
+}
+#undef LSDA_FIELD_OF
+#undef LSDA_OWN_FIELD
+#undef LSDA_LSD_FIELD
+#undef LSDA_FLD_FIELD
+#undef LSDA_EDLINES_FIELD
 
 template <class S>
 const std::vector<Field<S> >& fieldsOf()
@@ -187,6 +315,10 @@ struct Parameters
     LSDAdvance::FLDParams fld;
     EdgeDrawing::Params edLines;
 };
+
+//! The parameters of a preset (LSDAdvance::Preset): the defaults, then what the preset changes.
+//! Throws on an unknown preset.
+Parameters presetParameters(int preset);
 
 //! Throws cv::Exception naming the first field out of its range, with the range.
 void validate(const LSDAdvance::Params& params);

@@ -50,7 +50,7 @@ void unite(std::vector<int>& parent, int a, int b)
 }
 
 // Cells fit in 32 bits: coordinates are finite and bounded (checked by the caller), and the
-// cell size is at least 0.1 px.
+// cell size, endpointDistance, is at least 0.1 px (its range, parameters.hpp).
 int64 cellKey(int64 cx, int64 cy)
 {
     return (int64)(((uint64)(uint32_t)cx << 32) | (uint64)(uint32_t)cy);
@@ -112,11 +112,9 @@ int angleBin(const Vec4f& s, double binWidth)
     return std::min((int)(angle / binWidth), binCount(binWidth) - 1);
 }
 
-void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params,
+void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
                    SegmentGroups& groups, GroupingWorkspace& ws)
 {
-    CV_CheckGT(params.angleBinWidth, 0.0, "angle bins have a width");
-    CV_CheckGE(params.endpointDistance, 0.1, "grid cells are at least 0.1 px");
     const int n = (int)segments.size();
     const int bins = binCount(params.angleBinWidth);
     const double cellSize = params.endpointDistance;
@@ -206,10 +204,26 @@ void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params&
         groups.members[ws.fill[ws.groupOf[i]]++] = i;
 }
 
-void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params, SegmentGroups& groups)
+int mergeGroupCount(const SegmentGroups& groups)
 {
-    GroupingWorkspace workspace;
-    groupSegments(segments, params, groups, workspace);
+    int count = 0;
+    for (int g = 0; g < groups.count(); g++)
+        count += groups.offsets[g + 1] - groups.offsets[g] > 1;
+    return count;
+}
+
+void groupLabels(const SegmentGroups& groups, std::vector<int>& labels)
+{
+    labels.assign(groups.members.size(), -1);
+    int next = 0;
+    for (int g = 0; g < groups.count(); g++)
+    {
+        if (groups.offsets[g + 1] - groups.offsets[g] < 2)
+            continue;
+        for (int k = groups.offsets[g]; k < groups.offsets[g + 1]; k++)
+            labels[groups.members[k]] = next;
+        next++;
+    }
 }
 
 }}} // namespace cv::ximgproc::lsda

@@ -43,7 +43,7 @@ Point2d unitDirection(const Vec4f& s)
 // Whether seg may fuse into base: inside the perpendicular gate, closer than Dth, and scoring
 // at least the threshold (the score is returned). Without the distance condition, direction and
 // length alone (0.6 with the paper's weights) would join collinear pieces any distance apart.
-bool passes(const Vec4f& base, const Vec4f& seg, const LSDAdvance::Params& params, double& score)
+bool passes(const Vec4f& base, const Vec4f& seg, const MergingParams& params, double& score)
 {
     if (perpendicularOffset(base, seg) > params.maxPerpendicularOffset)
         return false;
@@ -62,7 +62,7 @@ double withSlack(double distance)
 
 // Lanes of the sweep: 8 times the perpendicular gate, at least 8 px (narrower lanes cost more
 // look-ups than they save on YorkUrban and on the synthetic sets).
-double laneWidth(const LSDAdvance::Params& params)
+double laneWidth(const MergingParams& params)
 {
     return std::max(8.0 * params.maxPerpendicularOffset, 8.0);
 }
@@ -76,7 +76,7 @@ double laneWidth(const LSDAdvance::Params& params)
 // all-pairs rule).
 struct Reach
 {
-    Reach(double baseLength, double maxOther, const LSDAdvance::Params& p)
+    Reach(double baseLength, double maxOther, const MergingParams& p)
         : params(p), maxDistance(p.proximityRatio * 0.5 * (baseLength + maxOther)),
           lengthBound(baseLength > 0 ? std::min(1.0, maxOther / baseLength) : 1.0)
     {}
@@ -90,7 +90,7 @@ struct Reach
         return withSlack(reach);
     }
 
-    const LSDAdvance::Params& params;
+    const MergingParams& params;
     double maxDistance, lengthBound;
 };
 
@@ -125,7 +125,7 @@ private:
 // fusion happens; a piece too far from its baseline in one round may join once its neighbour
 // has. Only the segments a grown baseline can reach, and those whose fusion failed, are scored
 // again: the others' best baseline cannot have changed.
-void mergeIntoBaselines(MergeWorkspace& ws, const LSDAdvance::Params& params)
+void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -247,7 +247,7 @@ void mergeIntoBaselines(MergeWorkspace& ws, const LSDAdvance::Params& params)
 // again and again until none passes; equal lengths go by index. Unlike the paper's rule, two
 // long collinear pieces of one edge can join. The shorter segments are visited outwards from
 // the base's projection and the visit stops where no segment can reach the best score so far.
-void mergeLongestFirst(MergeWorkspace& ws, const LSDAdvance::Params& params)
+void mergeLongestFirst(MergeWorkspace& ws, const MergingParams& params)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -351,7 +351,7 @@ SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& other, doubl
 }
 
 // Reach (above) bounds this score from the gap between two projections: change both together.
-double similarityScore(const SimilarityTerms& t, const LSDAdvance::Params& p)
+double similarityScore(const SimilarityTerms& t, const MergingParams& p)
 {
     return p.directionWeight * t.direction + p.proximityWeight * t.proximity +
            p.lengthWeight * t.length;
@@ -506,7 +506,7 @@ int ProjectionSweep::lastStartingBefore(int lane, double value)
 }
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                 const LSDAdvance::Params& params, std::vector<Vec4f>& merged, std::vector<int>& mergedInto,
+                 const MergingParams& params, std::vector<Vec4f>& merged, std::vector<int>& mergedInto,
                  MergeWorkspace& ws)
 {
     merged.clear();
@@ -554,7 +554,7 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
 }
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                 const LSDAdvance::Params& params, std::vector<Vec4f>& merged)
+                 const MergingParams& params, std::vector<Vec4f>& merged)
 {
     MergeWorkspace workspace;
     std::vector<int> mergedInto;

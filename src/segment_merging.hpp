@@ -22,7 +22,7 @@ namespace lsda {
 //! crosses: merging looks at the segments of those lanes whose projections come near the base's,
 //! never at the whole group. This keeps a group of thousands of collinear pieces, or of
 //! hundreds of parallel ones (a textured facade), near-linear.
-class CV_EXPORTS ProjectionSweep
+class ProjectionSweep
 {
 public:
     //! Files the segments geometry[ids[k]], projected on the unit vector direction, in lanes at

@@ -2,26 +2,49 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Internal interface of the LSDAdvance pipeline: one pure function per stage, plain data in and
-// out, so that each stage can be tested alone. Exported only for the module's own tests.
+// Internal interface of the LSDAdvance pipeline: one file per stage, plain data in and out, each
+// stage with the parameters it reads only, so that each can be tested alone. This is the only
+// internal header that exports anything: the CV_EXPORTS functions below, which the module's
+// tests call directly.
 
 #ifndef OPENCV_LSD_ADVANCE_STAGES_HPP
 #define OPENCV_LSD_ADVANCE_STAGES_HPP
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
+#include <algorithm>
 #include <vector>
 
 namespace cv {
 namespace ximgproc {
 namespace lsda {
 
-//--- stage 0: base detection (base_detector.cpp)
+//--- the callers' arrays (segment_io.cpp)
 
 //! Returns the image as CV_8UC1 (a view when it already is); throws on any other input.
-CV_EXPORTS Mat toGray8U(InputArray image);
+Mat toGray8U(InputArray image);
+
+//! Segments of an N x 1 or 1 x N CV_32FC4 array (empty for an empty one) into a caller's buffer;
+//! throws on any other layout, naming `what` in the message.
+void toSegments(InputArray lines, const char* what, std::vector<Vec4f>& segments);
+
+//! The same into a new vector.
+std::vector<Vec4f> toSegments(InputArray lines, const char* what);
+
+//! Larger coordinates are not image coordinates; bounding them keeps the grouping grid's cells
+//! within 32 bits.
+constexpr double kMaxCoordinate = 1e7;
+
+//! toSegments(), also throwing on a coordinate that is not finite or not within kMaxCoordinate.
+void toImageSegments(InputArray lines, const char* what, std::vector<Vec4f>& segments);
+
+//! LSDAdvance::drawSegments(): the segments in red, 1 px wide, on a gray (made BGR) or BGR image.
+void drawSegments(InputOutputArray image, InputArray lines);
+
+//--- stage 0: base detection (base_detector.cpp)
 
 //! Stage 0 behind one interface: OpenCV's detectors, constructed once and reused frame to frame.
-class CV_EXPORTS BaseSegmentDetector
+//! Each takes any non-empty CV_8UC1 image: one its detector cannot read has no segment.
+class BaseSegmentDetector
 {
 public:
     virtual ~BaseSegmentDetector() {}
@@ -38,14 +61,39 @@ CV_EXPORTS Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvanc
 //! samples 2 px either side, nearest pixel, samples outside the image skipped).
 CV_EXPORTS void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments);
 
-//! Segments of an N x 1 or 1 x N CV_32FC4 array (empty for an empty one); throws on any other
-//! layout, naming `what` in the message.
-CV_EXPORTS std::vector<Vec4f> toSegments(InputArray lines, const char* what);
+//--- segment responses (line_response.cpp)
 
-//! The same into a caller's buffer (reused from call to call).
-CV_EXPORTS void toSegments(InputArray lines, const char* what, std::vector<Vec4f>& segments);
+//! Response of each segment: length / max(width, height) * (mean contrast / 255)^2, times 0.1 when
+//! an endpoint lies within 2 px of the image's edge or beyond it (computeLineResponses()).
+CV_EXPORTS void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments,
+                              std::vector<float>& responses);
 
 //--- stage 1: adaptive length suppression (length_filter.cpp)
+
+//! The rows of LSDAdvance::Params that stage 1 reads.
+struct LengthFilterParams
+{
+    explicit LengthFilterParams(const LSDAdvance::Params& p = LSDAdvance::Params())
+        : lengthFilterMode(p.lengthFilterMode), lengthThresholdRule(p.lengthThresholdRule),
+          lengthThresholdScale(p.lengthThresholdScale), keepStrongSegments(p.keepStrongSegments)
+    {}
+    int lengthFilterMode, lengthThresholdRule;
+    double lengthThresholdScale;
+    bool keepStrongSegments;
+};
+
+//! What stage 1 kept in the two previous frames of a sequence: the state of the inter-frame modes.
+struct KeptCounts
+{
+    int frames = 0;                          //!< frames of the sequence so far, counted up to 2
+    int previous = 0, beforePrevious = 0;    //!< kept in frames k-1 and k-2
+    void add(int kept)
+    {
+        beforePrevious = previous;
+        previous = kept;
+        frames = std::min(frames + 1, 2);
+    }
+};
 
 CV_EXPORTS double segmentLength(const Vec4f& segment);
 
@@ -59,9 +107,6 @@ CV_EXPORTS double continuousInterFrameAlpha(int keptPrevious, int keptBeforePrev
 //! this frame keeps with alpha = 1 and the mean kept count of frames k-1 and k-2 (1 when that is 0).
 CV_EXPORTS double countTrackingAlpha(int provisional, int keptPrevious, int keptBeforePrevious);
 
-//! Number of segments at least minLength long.
-CV_EXPORTS int countAtLeast(const std::vector<Vec4f>& segments, double minLength);
-
 //! Length threshold (LSDAdvance::LengthThresholdRule rule) of the segments' lengths (mean,
 //! population std), times alpha; 0 for no segments.
 CV_EXPORTS double adaptiveMinLength(const std::vector<Vec4f>& segments, double alpha,
@@ -70,14 +115,9 @@ CV_EXPORTS double adaptiveMinLength(const std::vector<Vec4f>& segments, double a
 //! The same rule on responses (lineResponses): the threshold of stage 1's strong segments.
 CV_EXPORTS double adaptiveMinResponse(const std::vector<float>& responses, double alpha, int rule);
 
-//! Copies the segments not shorter than minLength, in their order; keptFrom, when given, gets the
-//! index in segments of each kept one.
-CV_EXPORTS void dropShortSegments(const std::vector<Vec4f>& segments, double minLength,
-                                  std::vector<Vec4f>& kept, std::vector<int>* keptFrom = nullptr);
-
 //! Copies, in their order, the segments at least minLength long or, when responses (one per
-//! segment) are given, with a response of at least minResponse: long or strong. keptFrom as for
-//! dropShortSegments.
+//! segment) are given, with a response of at least minResponse: long or strong. keptFrom, when
+//! given, gets the index in segments of each kept one.
 CV_EXPORTS void keepLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
                                  double minLength, double minResponse, std::vector<Vec4f>& kept,
                                  std::vector<int>* keptFrom = nullptr);
@@ -86,19 +126,42 @@ CV_EXPORTS void keepLongOrStrong(const std::vector<Vec4f>& segments, const std::
 CV_EXPORTS int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses,
                                  double minLength, double minResponse);
 
-//--- segment responses (line_response.cpp)
+//! Stage 1 of one frame. Its thresholds always come from the frame's base segments (after
+//! merging, the lengths are no longer those of one detector's output), and every mode scales
+//! them by the frame's alpha; it filters the base segments or what merging made of them.
+class LengthFilter
+{
+public:
+    //! The thresholds at alpha = 1 from the base segments: the rule on their lengths, times
+    //! lengthThresholdScale, and with keepStrongSegments and an image, the same on their responses.
+    //! Without an image (processSegments) it keeps long segments only.
+    void measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& params);
+    //! Keeps the long (or strong) segments of in, the base segments given to measure() when inIsBase
+    //! or else merging's output from them, with the alpha of this frame of the sequence history;
+    //! keptFrom gets the index in `in` of each kept one. Fills stats' alpha, minLength, minResponse
+    //! and filteredSegments.
+    void apply(const std::vector<Vec4f>& in, bool inIsBase, const Mat* gray, const KeptCounts& history,
+               std::vector<Vec4f>& kept, std::vector<int>& keptFrom, LSDAdvanceStats& stats);
 
-//! Mean gray-level step across the segment, its left (brighter) side minus its right side, 1 px
-//! either side of its centre line, sampled at the centre of each unit step (bilinear, coordinates
-//! clamped into the image); negative steps count 0. Gray levels, in [0, 255].
-CV_EXPORTS double meanContrast(const Mat& gray, const Vec4f& segment);
-
-//! Response of each segment: length / max(width, height) * (meanContrast / 255)^2, times 0.1 when
-//! an endpoint lies within 2 px of the image's edge or beyond it (the frame cuts the segment).
-CV_EXPORTS void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments,
-                              std::vector<float>& responses);
+private:
+    LengthFilterParams params;
+    bool strong = false;  //!< short segments of high response are kept
+    double unitMinLength = 0, unitMinResponse = 0;
+    std::vector<float> baseResponses, mergedResponses;
+};
 
 //--- stage 2: angle + endpoint grouping (segment_grouping.cpp)
+
+//! The rows of LSDAdvance::Params that stage 2 reads.
+struct GroupingParams
+{
+    explicit GroupingParams(const LSDAdvance::Params& p = LSDAdvance::Params())
+        : angleBinWidth(p.angleBinWidth), angleBinning(p.angleBinning), endpointDistance(p.endpointDistance)
+    {}
+    double angleBinWidth;
+    int angleBinning;
+    double endpointDistance;
+};
 
 //! Merge groups in compressed form: the members of group g are
 //! members[offsets[g]] .. members[offsets[g+1] - 1], in increasing index order; groups are
@@ -127,16 +190,38 @@ struct GroupingWorkspace
     std::vector<int> fill;
 };
 
-//! Groups in O(n) expected time (a hashed grid of endpoints, union-find).
-//! Uses params.angleBinWidth, angleBinning and endpointDistance.
-CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params,
+//! Groups in O(n) expected time (a hashed grid of endpoints, union-find). The parameters are in
+//! their ranges (parameters.hpp).
+CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
                               SegmentGroups& groups, GroupingWorkspace& workspace);
 
 //! The same with a temporary workspace.
-CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params,
-                              SegmentGroups& groups);
+inline void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params, SegmentGroups& groups)
+{
+    GroupingWorkspace workspace;
+    groupSegments(segments, params, groups, workspace);
+}
+
+//! Number of groups of two or more segments (LSDAdvanceStats::mergeGroups).
+int mergeGroupCount(const SegmentGroups& groups);
+
+//! Each segment's number among the groups of two or more, numbered in group order; -1 alone.
+void groupLabels(const SegmentGroups& groups, std::vector<int>& labels);
 
 //--- stage 3: similarity-ordered merging (segment_merging.cpp)
+
+//! The rows of LSDAdvance::Params that stage 3 reads.
+struct MergingParams
+{
+    explicit MergingParams(const LSDAdvance::Params& p = LSDAdvance::Params())
+        : mergeStrategy(p.mergeStrategy), baselineRatio(p.baselineRatio), directionWeight(p.directionWeight),
+          proximityWeight(p.proximityWeight), lengthWeight(p.lengthWeight), proximityRatio(p.proximityRatio),
+          mergeThreshold(p.mergeThreshold), maxPerpendicularOffset(p.maxPerpendicularOffset)
+    {}
+    int mergeStrategy;
+    double baselineRatio, directionWeight, proximityWeight, lengthWeight, proximityRatio, mergeThreshold,
+        maxPerpendicularOffset;
+};
 
 struct SimilarityTerms
 {
@@ -158,7 +243,7 @@ CV_EXPORTS SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& o
 //! S = directionWeight Sd + proximityWeight Sp + lengthWeight Sl. The merging sweep's pruning
 //! bound (Reach in segment_merging.cpp) is derived from this formula and from
 //! similarityTerms(): a change of either must change the bound.
-CV_EXPORTS double similarityScore(const SimilarityTerms& terms, const LSDAdvance::Params& params);
+CV_EXPORTS double similarityScore(const SimilarityTerms& terms, const MergingParams& params);
 
 //! Fuses other into baseline; the result keeps the baseline's orientation.
 CV_EXPORTS Vec4f fuseSegments(const Vec4f& baseline, const Vec4f& other);
@@ -171,12 +256,12 @@ struct MergeWorkspace;
 //! the index of the merged segment it is part of. The result is that of scoring every pair of
 //! the group, computed with the sweep.
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                            const LSDAdvance::Params& params, std::vector<Vec4f>& merged,
+                            const MergingParams& params, std::vector<Vec4f>& merged,
                             std::vector<int>& mergedInto, MergeWorkspace& workspace);
 
 //! The same with a temporary workspace, without mergedInto.
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                            const LSDAdvance::Params& params, std::vector<Vec4f>& merged);
+                            const MergingParams& params, std::vector<Vec4f>& merged);
 
 //--- after the stages: clipping to the image (image_clipping.cpp)
 
@@ -188,6 +273,27 @@ CV_EXPORTS bool clipToDomain(const Vec4f& segment, const Size& imageSize, Vec4f&
 //! clipToDomain() on each segment; keptFrom gets the index in segments of each one kept.
 CV_EXPORTS void clipToImage(const std::vector<Vec4f>& segments, const Size& imageSize,
                             std::vector<Vec4f>& clipped, std::vector<int>& keptFrom);
+
+//--- through the stages: which returned line each base segment is part of (provenance.cpp)
+
+//! Follows the base segments of a call through the stages for getLastSources(): each stage that
+//! keeps a subsequence of its input (keptFrom) or fuses it (mergedInto) is followed in turn.
+class SegmentProvenance
+{
+public:
+    //! Each of the base segments is its own line.
+    void start(size_t baseCount);
+    //! After a stage that kept, of its inputSize segments, those of keptFrom (in order).
+    void followKept(const std::vector<int>& keptFrom, size_t inputSize);
+    //! After a stage that made of segment i of its input its segment mergedInto[i].
+    void followMerged(const std::vector<int>& mergedInto);
+    //! For each of the lineCount lines, the increasing indices of the base segments it is made of.
+    void sources(int lineCount, OutputArrayOfArrays sources) const;
+
+private:
+    std::vector<int> lineOf;  //!< the line each base segment is part of (-1: none)
+    std::vector<int> into;
+};
 
 }}} // namespace cv::ximgproc::lsda
 

@@ -9,7 +9,6 @@
 // validation of LSD_REFINE_ADV.
 
 #include "test_precomp.hpp"
-#include "../src/fast_lsd.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -115,13 +114,19 @@ LSDAdvance::LSDParams lsdParams(int refine, double scale)
     return p;
 }
 
+// The module's own LSD alone: stage 0 of BASE_FAST_LSD.
+Ptr<lsda::BaseSegmentDetector> fastLsd(const LSDAdvance::LSDParams& p)
+{
+    return lsda::createBaseDetector(LSDAdvance::BASE_FAST_LSD, p, LSDAdvance::FLDParams(), EdgeDrawing::Params());
+}
+
 // Both detectors with the same parameters on every image, pooled.
 Agreement compareWithOpenCV(const std::vector<std::string>& paths, const LSDAdvance::LSDParams& p)
 {
     Ptr<LineSegmentDetector> opencv = createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant,
                                                                 p.angleTolerance, p.logEps, p.densityThreshold,
                                                                 p.numBins);
-    lsda::FastLsd ours(p);
+    Ptr<lsda::BaseSegmentDetector> ours = fastLsd(p);
     Agreement total;
     for (const std::string& path : paths)
     {
@@ -131,7 +136,7 @@ Agreement compareWithOpenCV(const std::vector<std::string>& paths, const LSDAdva
             continue;
         std::vector<Vec4f> a, b;
         opencv->detect(img, a);
-        ours.detect(img, b);
+        ours->detect(img, b);
         total.opencv += (int)a.size();
         total.ours += (int)b.size();
         total.opencvByOurs += reproduced(a, b);
@@ -216,7 +221,8 @@ TEST(LSDAdvance_FastLsd, advanced_refinement_validates_like_OpenCV_LSD)
 TEST(LSDAdvance_FastLsd, advanced_refinement_finds_almost_no_segment_in_noise)
 {
     // At OpenCV's default scale 0.8, whose Gaussian sub-sampling correlates neighbouring gradients.
-    lsda::FastLsd withValidation(lsdParams(LSD_REFINE_ADV, 0.8)), without(lsdParams(LSD_REFINE_NONE, 0.8));
+    Ptr<lsda::BaseSegmentDetector> withValidation = fastLsd(lsdParams(LSD_REFINE_ADV, 0.8)),
+                                   without = fastLsd(lsdParams(LSD_REFINE_NONE, 0.8));
     RNG rng(11);
     int validated = 0, unvalidated = 0;
     for (int i = 0; i < 5; i++)
@@ -224,9 +230,9 @@ TEST(LSDAdvance_FastLsd, advanced_refinement_finds_almost_no_segment_in_noise)
         Mat noise(480, 640, CV_8UC1);
         rng.fill(noise, RNG::NORMAL, 128, 40);
         std::vector<Vec4f> lines;
-        withValidation.detect(noise, lines);
+        withValidation->detect(noise, lines);
         validated += (int)lines.size();
-        without.detect(noise, lines);
+        without->detect(noise, lines);
         unvalidated += (int)lines.size();
     }
     std::cout << "[ INFO ] noise: " << unvalidated << " segments without validation, " << validated << " with" << std::endl;
@@ -239,7 +245,7 @@ TEST(LSDAdvance_FastLsd, advanced_refinement_keeps_a_clean_edge)
     Mat img(200, 300, CV_8UC1, Scalar(50));
     rectangle(img, Point(40, 60), Point(259, 199), Scalar(200), FILLED);
     std::vector<Vec4f> lines;
-    lsda::FastLsd(lsdParams(LSD_REFINE_ADV, 1.0)).detect(img, lines);
+    fastLsd(lsdParams(LSD_REFINE_ADV, 1.0))->detect(img, lines);
     int along = 0;  // segments on the top edge (y = 59.5), at least 150 px long
     for (const Vec4f& l : lines)
         along += std::abs(l[1] - 59.5f) < 1.f && std::abs(l[3] - 59.5f) < 1.f && std::abs(l[2] - l[0]) > 150.f;

@@ -7,7 +7,7 @@
 namespace opencv_test { namespace {
 
 // Group index of every segment.
-std::vector<int> groupIds(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params)
+std::vector<int> groupIds(const std::vector<Vec4f>& segments, const lsda::GroupingParams& params)
 {
     lsda::SegmentGroups groups;
     lsda::groupSegments(segments, params, groups);
@@ -18,9 +18,9 @@ std::vector<int> groupIds(const std::vector<Vec4f>& segments, const LSDAdvance::
     return id;
 }
 
-LSDAdvance::Params groupingParams(bool neighbourBins, double endpointDistance = 10.0)
+lsda::GroupingParams groupingParams(bool neighbourBins, double endpointDistance = lsda::GroupingParams().endpointDistance)
 {
-    LSDAdvance::Params p;
+    lsda::GroupingParams p;
     p.angleBinning = neighbourBins ? LSDAdvance::ANGLE_BINS_NEIGHBOURS : LSDAdvance::ANGLE_BINS_STRICT;
     p.endpointDistance = endpointDistance;
     return p;
@@ -108,7 +108,7 @@ TEST(LSDAdvance_Grouping, matches_an_all_pairs_reference_on_random_segments)
         for (int i = 0; i < 300; i++)
             segments.push_back(segmentAt(rng.uniform(0., 300.), rng.uniform(0., 300.),
                                          rng.uniform(0., 360.), rng.uniform(0., 40.)));
-        LSDAdvance::Params params = groupingParams(trial % 2 == 0, rng.uniform(2., 20.));
+        lsda::GroupingParams params = groupingParams(trial % 2 == 0, rng.uniform(2., 20.));
         params.angleBinWidth = rng.uniform(5., 30.);
 
         // Reference: all pairs, connected components by repeated relabelling.

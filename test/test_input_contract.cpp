@@ -632,8 +632,8 @@ TEST(LSDAdvance_InputContract, read_of_a_file_with_a_bad_value_changes_no_parame
     expectRejectedAndStillCorrect([&](LSDAdvance& d) { readText(d, text); }, { "mergeThreshold" });
     Ptr<LSDAdvance> detector = createLSDAdvance();
     EXPECT_THROW(readText(*detector, text), cv::Exception);
-    EXPECT_EQ(1.0, detector->getLSDParams().scale);
-    EXPECT_EQ(10.0, detector->getEndpointDistance());
+    EXPECT_EQ(LSDAdvance::LSDParams().scale, detector->getLSDParams().scale);
+    EXPECT_EQ(LSDAdvance::Params().endpointDistance, detector->getEndpointDistance());
     EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, detector->getLengthFilterMode());
 }
 
@@ -665,7 +665,7 @@ TEST(LSDAdvance_InputContract, read_of_a_future_file_ignores_unknown_keys)
     EXPECT_EQ(0.7, detector->getMergeThreshold());
     EXPECT_EQ(0.5, detector->getLSDParams().scale);
 
-    Ptr<LSDAdvance> expected = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, 0.7);
+    Ptr<LSDAdvance> expected = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, LSDAdvance::Params().endpointDistance, 0.7);
     LSDAdvance::LSDParams lsd = expected->getLSDParams();
     lsd.scale = 0.5;
     expected->setLSDParams(lsd);

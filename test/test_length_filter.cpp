@@ -81,7 +81,7 @@ TEST(LSDAdvance_LengthFilter, minLength_is_zero_for_zero_length_segments)
     const std::vector<Vec4f> points(5, Vec4f(3, 4, 3, 4));
     EXPECT_EQ(0.0, lsda::adaptiveMinLength(points, 1.0));
     std::vector<Vec4f> kept;
-    lsda::dropShortSegments(points, 0.0, kept);
+    lsda::keepLongOrStrong(points, std::vector<float>(), 0.0, 0.0, kept);
     EXPECT_EQ(points.size(), kept.size());
 }
 
@@ -89,7 +89,7 @@ TEST(LSDAdvance_LengthFilter, drops_only_segments_shorter_than_minLength_and_kee
 {
     const std::vector<Vec4f> segments = segmentsOfLengths({ 5, 30, 12, 12.5, 40 });
     std::vector<Vec4f> kept;
-    lsda::dropShortSegments(segments, 12.0, kept);
+    lsda::keepLongOrStrong(segments, std::vector<float>(), 12.0, 0.0, kept);
     ASSERT_EQ(4u, kept.size());
     EXPECT_EQ(segments[1], kept[0]);
     EXPECT_EQ(segments[2], kept[1]);  // exactly minLength is kept
@@ -176,8 +176,7 @@ TEST(LSDAdvance_LengthFilter, keeps_long_or_strong_segments_in_order_and_the_res
     EXPECT_EQ(4, lsda::countLongOrStrong(segments, responses, 20.0, 0.25));
     // Without responses it is the length filter.
     lsda::keepLongOrStrong(segments, std::vector<float>(), 20.0, 0.01, kept);
-    std::vector<Vec4f> longOnes;
-    lsda::dropShortSegments(segments, 20.0, longOnes);
+    const std::vector<Vec4f> longOnes = { segments[1], segments[4] };
     EXPECT_EQ(longOnes, kept);
     EXPECT_EQ(2, lsda::countLongOrStrong(segments, std::vector<float>(), 20.0, 0.01));
     EXPECT_THROW(lsda::keepLongOrStrong(segments, std::vector<float>(2, 1.f), 20.0, 0.01, kept), cv::Exception);
@@ -192,10 +191,10 @@ TEST(LSDAdvance_LengthFilter, keeps_long_or_strong_segments_in_order_and_the_res
     EXPECT_EQ(0.0, lsda::adaptiveMinResponse(std::vector<float>(), 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED));
 }
 
-TEST(LSDAdvance_LengthFilter, countAtLeast_counts_segments_not_shorter_than_the_length)
+TEST(LSDAdvance_LengthFilter, without_responses_counts_segments_not_shorter_than_the_length)
 {
-    EXPECT_EQ(3, lsda::countAtLeast(segmentsOfLengths({ 5, 12, 12.5, 40 }), 12.0));
-    EXPECT_EQ(0, lsda::countAtLeast(std::vector<Vec4f>(), 1.0));
+    EXPECT_EQ(3, lsda::countLongOrStrong(segmentsOfLengths({ 5, 12, 12.5, 40 }), std::vector<float>(), 12.0, 0.0));
+    EXPECT_EQ(0, lsda::countLongOrStrong(std::vector<Vec4f>(), std::vector<float>(), 1.0, 0.0));
 }
 
 }} // namespace

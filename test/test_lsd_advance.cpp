@@ -3,7 +3,6 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
-#include "../src/fast_lsd.hpp"
 
 namespace opencv_test { namespace {
 
@@ -54,7 +53,8 @@ std::vector<Vec4f> detectBase(const Mat& image)
     const Ptr<LSDAdvance> d = createLSDAdvance();
     EXPECT_EQ(LSDAdvance::BASE_FAST_LSD, d->getBaseDetector());
     std::vector<Vec4f> lines;
-    lsda::FastLsd(d->getLSDParams()).detect(image, lines);
+    lsda::createBaseDetector(LSDAdvance::BASE_FAST_LSD, d->getLSDParams(), d->getFLDParams(), d->getEDLinesParams())
+        ->detect(image, lines);
     return lines;
 }
 
@@ -186,7 +186,7 @@ TEST(LSDAdvance_Detect, stats_report_every_stage_in_the_paper_order)
     EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED), stats.minLength, 1e-9);
     EXPECT_EQ(1.0, stats.alpha);
     std::vector<Vec4f> kept;
-    lsda::dropShortSegments(base, stats.minLength, kept);
+    lsda::keepLongOrStrong(base, std::vector<float>(), stats.minLength, 0.0, kept);
     EXPECT_EQ((int)kept.size(), stats.filteredSegments);
     EXPECT_EQ((int)lines.size(), stats.mergedSegments);
     EXPECT_EQ((int)lines.size(), stats.outputSegments);
@@ -248,7 +248,7 @@ TEST(LSDAdvance_Detect, merge_none_returns_the_filtered_base_segments)
     detector->setMergeStrategy(LSDAdvance::MERGE_NONE);
     const std::vector<Vec4f> lines = detectLines(detector, img);
     std::vector<Vec4f> kept;
-    lsda::dropShortSegments(detectBase(img), detector->getLastStats().minLength, kept);
+    lsda::keepLongOrStrong(detectBase(img), std::vector<float>(), detector->getLastStats().minLength, 0.0, kept);
     EXPECT_EQ(kept, lines);
     EXPECT_EQ(0, detector->getLastStats().mergeGroups);
 }
@@ -477,8 +477,8 @@ TEST(LSDAdvance_Sequence, every_setter_resets_the_sequence)
         [](LSDAdvance& d) { d.setEDLinesParams(d.getEDLinesParams()); },
         [](LSDAdvance& d) { d.setParams(d.getParams()); },
         [](LSDAdvance& d) { d.setLengthFilterMode(LSDAdvance::LENGTH_FILTER_INTERFRAME); },
-        [](LSDAdvance& d) { d.setMergeThreshold(0.6); },
-        [](LSDAdvance& d) { d.setEndpointDistance(10.0); },
+        [](LSDAdvance& d) { d.setMergeThreshold(d.getMergeThreshold()); },
+        [](LSDAdvance& d) { d.setEndpointDistance(d.getEndpointDistance()); },
     };
     Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_INTERFRAME);
     ASSERT_NE(1.0, alphasOf(detector, std::vector<Mat>(frames.begin(), frames.begin() + 3))[2]);

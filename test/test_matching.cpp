@@ -11,7 +11,7 @@
 #include "test_precomp.hpp"
 #include "opencv2/lsd_advance/evaluation.hpp"
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-#include "../samples/line_matching.hpp"
+#include "../apps/lsd_advance_bench/line_matching.hpp"
 #endif
 
 #include <fstream>

@@ -7,10 +7,10 @@
 namespace opencv_test { namespace {
 
 // Groups with the default parameters, then merges with the given ones.
-std::vector<Vec4f> groupAndMerge(const std::vector<Vec4f>& segments, const LSDAdvance::Params& params,
+std::vector<Vec4f> groupAndMerge(const std::vector<Vec4f>& segments, const lsda::MergingParams& params,
                                  bool neighbourBins = true)
 {
-    LSDAdvance::Params grouping;
+    lsda::GroupingParams grouping;
     grouping.angleBinning = neighbourBins ? LSDAdvance::ANGLE_BINS_NEIGHBOURS : LSDAdvance::ANGLE_BINS_STRICT;
     lsda::SegmentGroups groups;
     lsda::groupSegments(segments, grouping, groups);
@@ -20,17 +20,17 @@ std::vector<Vec4f> groupAndMerge(const std::vector<Vec4f>& segments, const LSDAd
 }
 
 // The scores worked out in these tests use the paper's proximity ratio, 0.1.
-LSDAdvance::Params paperParams()
+lsda::MergingParams paperParams()
 {
-    LSDAdvance::Params p;
+    lsda::MergingParams p;
     p.mergeStrategy = LSDAdvance::MERGE_BASELINES;
     p.proximityRatio = 0.1;
     return p;
 }
 
-LSDAdvance::Params longestFirstParams()
+lsda::MergingParams longestFirstParams()
 {
-    LSDAdvance::Params p;
+    lsda::MergingParams p;
     p.mergeStrategy = LSDAdvance::MERGE_LONGEST_FIRST;
     p.proximityRatio = 0.1;
     return p;
@@ -87,7 +87,7 @@ TEST(LSDAdvance_Similarity, length_term_is_one_minus_the_relative_difference)
 
 TEST(LSDAdvance_Similarity, score_weights_the_three_terms)
 {
-    LSDAdvance::Params p;
+    lsda::MergingParams p;
     const lsda::SimilarityTerms t = { 1.0, 0.5, 0.25 };
     EXPECT_NEAR(0.4 * 1.0 + 0.35 * 0.5 + 0.2 * 0.25, lsda::similarityScore(t, p), 1e-12);
     p.directionWeight = 0.1;
@@ -161,7 +161,7 @@ TEST(LSDAdvance_MergingBaselines, parallel_edges_2px_apart_stay_two)
 {
     // Same polarity, overlapping, 2 px apart: close enough to score, stopped by the gate.
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 200, 0), Vec4f(195, 2, 265, 2) };
-    LSDAdvance::Params params = paperParams();
+    lsda::MergingParams params = paperParams();
     ASSERT_GE(lsda::similarityScore(lsda::similarityTerms(segments[0], segments[1], params.proximityRatio), params),
               params.mergeThreshold);
     EXPECT_EQ(2u, groupAndMerge(segments, params).size());
@@ -176,7 +176,7 @@ TEST(LSDAdvance_MergingBaselines, baselines_never_merge_with_each_other)
     EXPECT_EQ(2u, groupAndMerge(segments, paperParams()).size());
     // With a piece of 85 px (>= 0.8 * 100) the same holds; with baselineRatio 0.9 it fuses.
     const std::vector<Vec4f> shorter = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 187, 0) };
-    LSDAdvance::Params params = paperParams();
+    lsda::MergingParams params = paperParams();
     EXPECT_EQ(2u, groupAndMerge(shorter, params).size());
     params.baselineRatio = 0.9;
     EXPECT_EQ(1u, groupAndMerge(shorter, params).size());
@@ -186,7 +186,7 @@ TEST(LSDAdvance_MergingBaselines, merge_threshold_controls_fusion)
 {
     // Score of the piece: 0.4 * 1 + 0.35 * (1 - 3 / 7.5) + 0.2 * 0.5 = 0.71.
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
-    LSDAdvance::Params params = paperParams();
+    lsda::MergingParams params = paperParams();
     params.mergeThreshold = 0.70;
     EXPECT_EQ(1u, groupAndMerge(segments, params).size());
     params.mergeThreshold = 0.72;
@@ -196,19 +196,19 @@ TEST(LSDAdvance_MergingBaselines, merge_threshold_controls_fusion)
 TEST(LSDAdvance_MergingBaselines, weights_and_proximity_ratio_change_the_outcome)
 {
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
-    LSDAdvance::Params params = paperParams();
+    lsda::MergingParams params = paperParams();
     params.mergeThreshold = 0.8;
     EXPECT_EQ(2u, groupAndMerge(segments, params).size());
-    LSDAdvance::Params direction = params;
+    lsda::MergingParams direction = params;
     direction.directionWeight = 0.8;   // 0.8 + 0.21 + 0.1
     EXPECT_EQ(1u, groupAndMerge(segments, direction).size());
-    LSDAdvance::Params proximity = params;
+    lsda::MergingParams proximity = params;
     proximity.proximityWeight = 0.7;   // 0.4 + 0.42 + 0.1
     EXPECT_EQ(1u, groupAndMerge(segments, proximity).size());
-    LSDAdvance::Params length = params;
+    lsda::MergingParams length = params;
     length.lengthWeight = 0.6;         // 0.4 + 0.21 + 0.3
     EXPECT_EQ(1u, groupAndMerge(segments, length).size());
-    LSDAdvance::Params ratio = params;
+    lsda::MergingParams ratio = params;
     ratio.proximityRatio = 1.0;        // Dth = 75: 0.4 + 0.35 * 0.96 + 0.1
     EXPECT_EQ(1u, groupAndMerge(segments, ratio).size());
 }
@@ -257,7 +257,7 @@ TEST(LSDAdvance_MergingLongestFirst, chain_of_pieces_joins_from_the_longest)
 
 TEST(LSDAdvance_MergingLongestFirst, keeps_the_gate_the_threshold_and_polarity)
 {
-    LSDAdvance::Params params = longestFirstParams();
+    lsda::MergingParams params = longestFirstParams();
     const std::vector<Vec4f> parallel = { Vec4f(0, 0, 200, 0), Vec4f(195, 2, 265, 2) };
     EXPECT_EQ(2u, groupAndMerge(parallel, params).size());
     // Opposite directions: the two sides of a thin bar.
@@ -283,7 +283,7 @@ TEST(LSDAdvance_MergingLongestFirst, pieces_farther_apart_than_Dth_never_fuse)
     // Direction and length alone score 0.4 + 0.2 = 0.6: without the distance condition, two
     // equal collinear pieces 45 px apart would fuse. A parallel segment 5 px off chains them
     // into one group.
-    LSDAdvance::Params params = longestFirstParams();
+    lsda::MergingParams params = longestFirstParams();
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 50, 0), Vec4f(95, 0, 145, 0), Vec4f(45, 5, 100, 5) };
     ASSERT_GE(params.directionWeight + params.lengthWeight, params.mergeThreshold);
     const std::vector<Vec4f> merged = groupAndMerge(segments, params);
@@ -298,7 +298,7 @@ TEST(LSDAdvance_Similarity, a_point_has_no_direction)
 
 TEST(LSDAdvance_MergingNone, returns_every_segment_unchanged)
 {
-    LSDAdvance::Params params;
+    lsda::MergingParams params;
     params.mergeStrategy = LSDAdvance::MERGE_NONE;
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 202, 0), Vec4f(204, 0, 230, 0) };
     EXPECT_EQ(segments, groupAndMerge(segments, params));

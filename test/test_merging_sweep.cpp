@@ -6,11 +6,16 @@
 // These tests compare it with the rule written out over every pair of a group.
 
 #include "test_precomp.hpp"
-#include "../src/segment_merging.hpp"
 
 namespace opencv_test { namespace {
 
-bool passesReference(const Vec4f& base, const Vec4f& seg, const LSDAdvance::Params& p, double& score)
+struct MergeCandidate
+{
+    double score;
+    int segment, baseline;  // indices into the group
+};
+
+bool passesReference(const Vec4f& base, const Vec4f& seg, const lsda::MergingParams& p, double& score)
 {
     if (lsda::perpendicularOffset(base, seg) > p.maxPerpendicularOffset)
         return false;
@@ -23,7 +28,7 @@ bool passesReference(const Vec4f& base, const Vec4f& seg, const LSDAdvance::Para
 
 // MERGE_LONGEST_FIRST over every pair: from the longest down, absorb the best-scoring shorter
 // segment (ties: the earlier in length order) until none passes.
-void longestFirstReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const LSDAdvance::Params& p)
+void longestFirstReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const lsda::MergingParams& p)
 {
     const int n = (int)g.size();
     std::vector<int> order(n);
@@ -56,7 +61,7 @@ void longestFirstReference(std::vector<Vec4f>& g, std::vector<char>& consumed, c
 }
 
 // MERGE_BASELINES over every pair: rounds of best-baseline candidates, fused best first.
-void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const LSDAdvance::Params& p)
+void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, const lsda::MergingParams& p)
 {
     const int n = (int)g.size();
     double maxLength = 0;
@@ -69,10 +74,10 @@ void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, cons
         return;
     for (;;)
     {
-        std::vector<lsda::MergeCandidate> candidates;
+        std::vector<MergeCandidate> candidates;
         for (int s : pending)
         {
-            lsda::MergeCandidate best = { -1.0, s, -1 };
+            MergeCandidate best = { -1.0, s, -1 };
             double score;
             for (int b : baselines)
                 if (passesReference(g[b], g[s], p, score) && score > best.score)
@@ -82,12 +87,12 @@ void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, cons
         }
         if (candidates.empty())
             return;
-        std::sort(candidates.begin(), candidates.end(), [](const lsda::MergeCandidate& a, const lsda::MergeCandidate& b) {
+        std::sort(candidates.begin(), candidates.end(), [](const MergeCandidate& a, const MergeCandidate& b) {
             return a.score > b.score || (a.score == b.score && a.segment < b.segment);
         });
         bool fused = false;
         double score;
-        for (const lsda::MergeCandidate& c : candidates)
+        for (const MergeCandidate& c : candidates)
             if (passesReference(g[c.baseline], g[c.segment], p, score))
             {
                 g[c.baseline] = lsda::fuseSegments(g[c.baseline], g[c.segment]);
@@ -102,7 +107,7 @@ void baselinesReference(std::vector<Vec4f>& g, std::vector<char>& consumed, cons
 }
 
 std::vector<Vec4f> mergeReference(const std::vector<Vec4f>& segments, const lsda::SegmentGroups& groups,
-                                  const LSDAdvance::Params& p)
+                                  const lsda::MergingParams& p)
 {
     std::vector<Vec4f> merged;
     for (int gi = 0; gi < groups.count(); gi++)
@@ -159,7 +164,7 @@ typedef testing::TestWithParam<tuple<int, double, double> > LSDAdvance_MergingSw
 TEST_P(LSDAdvance_MergingSweepParams, equals_the_all_pairs_rule)
 {
     const int strategy = get<0>(GetParam());
-    LSDAdvance::Params p;
+    lsda::MergingParams p;
     p.mergeStrategy = strategy;
     p.proximityRatio = get<1>(GetParam());
     p.mergeThreshold = get<2>(GetParam());
@@ -169,7 +174,7 @@ TEST_P(LSDAdvance_MergingSweepParams, equals_the_all_pairs_rule)
         RNG rng(seed);
         const std::vector<Vec4f> segments = fragmentedLines(rng, 40, 500.0);
         lsda::SegmentGroups groups;
-        lsda::groupSegments(segments, LSDAdvance::Params(), groups);
+        lsda::groupSegments(segments, lsda::GroupingParams(), groups);
         std::vector<Vec4f> merged;
         lsda::mergeGroups(segments, groups, p, merged);
         const std::vector<Vec4f> expected = mergeReference(segments, groups, p);
@@ -187,13 +192,13 @@ INSTANTIATE_TEST_CASE_P(/**/, LSDAdvance_MergingSweepParams,
 TEST(LSDAdvance_MergingSweep, weights_without_proximity_equal_the_all_pairs_rule)
 {
     // With proximityWeight 0 the score cannot bound the distance: only Dth can.
-    LSDAdvance::Params p;
+    lsda::MergingParams p;
     p.proximityWeight = 0;
     p.mergeThreshold = 0.5;
     RNG rng(11);
     const std::vector<Vec4f> segments = fragmentedLines(rng, 30, 400.0);
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
+    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
     for (int s : { LSDAdvance::MERGE_LONGEST_FIRST, LSDAdvance::MERGE_BASELINES })
     {
         p.mergeStrategy = s;
@@ -216,9 +221,9 @@ TEST(LSDAdvance_MergingSweep, one_group_of_thousands_of_collinear_pieces_becomes
         x += piece + 1.0;
     }
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
+    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
     ASSERT_EQ(1, groups.count());
-    LSDAdvance::Params p;
+    lsda::MergingParams p;
     std::vector<Vec4f> merged;
     lsda::mergeGroups(segments, groups, p, merged);
     ASSERT_EQ(1u, merged.size());

@@ -10,6 +10,9 @@
 #include "test_precomp.hpp"
 #include "parameter_access.hpp"
 
+#include <fstream>
+#include <regex>
+
 namespace opencv_test { namespace {
 
 // A value of the range other than current.
@@ -53,6 +56,91 @@ std::string logOfReading(LSDAdvance& d, const std::string& text)
     testing::internal::CaptureStderr();
     readText(d, text);
     return testing::internal::GetCapturedStderr();
+}
+
+// The public header as text: it sits beside the tests in the module's tree, in both builds.
+std::string publicHeader()
+{
+    std::string dir = __FILE__;
+    dir = dir.substr(0, dir.find_last_of("/\\") + 1);
+    const std::string path = dir + "../include/opencv2/lsd_advance/lsd_advance.hpp";
+    std::ifstream file(path.c_str());
+    CV_Assert(file.good() && "the public header is next to the tests");
+    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+// The interval a range documents, as the header writes it: "[0.1, 200]", "(0, 10]".
+std::string interval(const lsda::Range& r)
+{
+    return format("%c%g, %g%c", r.loBound == lsda::OPEN ? '(' : '[', r.lo, r.hi, r.hiBound == lsda::OPEN ? ')' : ']');
+}
+
+// A default as the header writes it: the name of an enumerated value, true/false, or a number.
+double documentedValue(const lsda::Range& r, const std::string& text)
+{
+    if (r.kind == lsda::Range::FLAG)
+        return text == "true" ? 1 : (text == "false" ? 0 : -1);
+    for (int k = 0; r.names && k < r.count; k++)
+        if (text == r.names[k])
+            return k;
+    return r.kind == lsda::Range::ENUM ? -1 : std::stod(text);
+}
+
+// Every field of struct S in the header's struct `name` says "Default X." with the table's default,
+// and a real one says "in <its range>".
+template <class S>
+void expectHeaderDocumentsTheTable(const std::string& header, const std::string& name)
+{
+    const std::string begin = "struct CV_EXPORTS_W_SIMPLE " + name + "\n";
+    const size_t at = header.find(begin);
+    ASSERT_NE(std::string::npos, at) << name;
+    const std::string body = header.substr(at, header.find("\n    };", at) - at);
+    const S defaults;
+    int documented = 0;
+    for (const lsda::Field<S>& f : lsda::fieldsOf<S>())
+    {
+        SCOPED_TRACE(name + "::" + f.name);
+        const std::regex line(std::string("CV_PROP_RW \\w+ ") + f.name + ";\\s*//!<([^\n]*)");
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(body, m, line));
+        const std::string doc = m[1];
+        std::smatch d;
+        ASSERT_TRUE(std::regex_search(doc, d, std::regex("Default ([-\\w.]+)\\.\\s*$")));
+        EXPECT_EQ(f.get(defaults), documentedValue(f.range, d[1]));
+        if (f.range.kind == lsda::Range::REAL)
+        {
+            EXPECT_NE(std::string::npos, doc.find("in " + interval(f.range))) << doc;
+        }
+        else if (f.range.kind == lsda::Range::LIST)
+        {
+            EXPECT_NE(std::string::npos, doc.find(f.range.describe())) << doc;
+        }
+        documented++;
+    }
+    int fields = 0;
+    for (size_t p = body.find("CV_PROP_RW"); p != std::string::npos; p = body.find("CV_PROP_RW", p + 1))
+        fields++;
+    EXPECT_EQ(fields, documented) << "a field the table lacks";
+}
+
+TEST(LSDAdvance_Parameters, header_documents_each_default_and_range_of_the_tables)
+{
+    const std::string header = publicHeader();
+    expectHeaderDocumentsTheTable<LSDAdvance::Params>(header, "Params");
+    expectHeaderDocumentsTheTable<LSDAdvance::LSDParams>(header, "LSDParams");
+    expectHeaderDocumentsTheTable<LSDAdvance::FLDParams>(header, "FLDParams");
+    // EdgeDrawing's own fields keep EdgeDrawing's defaults: setEDLinesParams() documents the ranges.
+    const size_t at = header.find("@brief Sets the parameters of BASE_EDLINES.");
+    ASSERT_NE(std::string::npos, at);
+    const std::string doc = std::regex_replace(header.substr(at, header.find("*/", at) - at), std::regex("\\s+"), " ");
+    for (const lsda::Field<EdgeDrawing::Params>& f : lsda::fieldsOf<EdgeDrawing::Params>())
+    {
+        if (f.range.kind != lsda::Range::REAL)
+            continue;
+        SCOPED_TRACE(f.name);
+        const std::string extra = f.range.hasExtra ? format("%g (%s) or ", f.range.extra, f.range.extraMeaning) : "";
+        EXPECT_NE(std::string::npos, doc.find(std::string(f.name) + " " + extra + interval(f.range))) << doc;
+    }
 }
 
 TEST(LSDAdvance_Parameters, every_parameter_round_trips_every_value_its_range_accepts)
@@ -231,9 +319,9 @@ TEST(LSDAdvance_Parameters, read_warns_about_an_unknown_key_naming_the_closest_a
                                           "'mergeThreshold'")) << log;
     EXPECT_NE(std::string::npos, log.find("unknown key 'lsd.scal' ignored; the closest known key is 'lsd.scale'"))
         << log;
-    EXPECT_EQ(0.6, detector->getMergeThreshold());
+    EXPECT_EQ(LSDAdvance::Params().mergeThreshold, detector->getMergeThreshold());
     EXPECT_EQ(4.0, detector->getEndpointDistance());
-    EXPECT_EQ(1.0, detector->getLSDParams().scale);
+    EXPECT_EQ(LSDAdvance::LSDParams().scale, detector->getLSDParams().scale);
     EXPECT_EQ(3.0, detector->getLSDParams().quant);
 
     // What write() writes has no unknown key.

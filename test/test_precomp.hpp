@@ -35,8 +35,9 @@ inline Vec4f segmentAt(double x, double y, double angleDeg, double length)
 
 //! A detector at the defaults but for the length filter mode, the endpoint distance and the merge
 //! threshold.
-inline Ptr<LSDAdvance> createLSDAdvanceWith(int lengthFilterMode, double endpointDistance = 10.0,
-                                            double mergeThreshold = 0.6)
+inline Ptr<LSDAdvance> createLSDAdvanceWith(int lengthFilterMode,
+                                            double endpointDistance = LSDAdvance::Params().endpointDistance,
+                                            double mergeThreshold = LSDAdvance::Params().mergeThreshold)
 {
     Ptr<LSDAdvance> detector = createLSDAdvance();
     LSDAdvance::Params p = detector->getParams();

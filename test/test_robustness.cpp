@@ -243,13 +243,13 @@ void expectSaneOutput(const std::vector<Vec4f>& input, const std::vector<Vec4f>&
 
 // Runs processSegments with each merge strategy and stage order; returns the outputs.
 std::vector<std::vector<Vec4f> > processWithEveryStrategy(const std::vector<Vec4f>& segments,
-                                                          double mergeThreshold = 0.6)
+                                                          double mergeThreshold = LSDAdvance::Params().mergeThreshold)
 {
     std::vector<std::vector<Vec4f> > outputs;
     for (int strategy : { LSDAdvance::MERGE_NONE, LSDAdvance::MERGE_BASELINES, LSDAdvance::MERGE_LONGEST_FIRST })
         for (int order : { LSDAdvance::FILTER_THEN_MERGE, LSDAdvance::MERGE_THEN_FILTER })
         {
-            Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, 10.0, mergeThreshold);
+            Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_ADAPTIVE, LSDAdvance::Params().endpointDistance, mergeThreshold);
             detector->setMergeStrategy(strategy);
             detector->setStageOrder(order);
             std::vector<Vec4f> lines;
@@ -286,7 +286,7 @@ TEST(LSDAdvance_DegenerateGeometry, zero_length_segments)
     std::cout << format("2550 segments, 2000 zero-length at one point: %.2f s for 12 runs", secondsSince(t0))
               << std::endl;
     // Without the length filter (which drops points), the 2000 coincident points fuse into one.
-    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE, 10.0, 0.5);
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE, LSDAdvance::Params().endpointDistance, 0.5);
     std::vector<Vec4f> lines;
     detector->processSegments(segments, lines);
     int atTheSpot = 0;
@@ -403,7 +403,7 @@ TEST(LSDAdvance_DegenerateGeometry, one_huge_group_of_connected_fragments_become
     const int n = 3000;
     const std::vector<Vec4f> segments = fragmentedLine(n, 3, 3);
     lsda::SegmentGroups groups;
-    lsda::groupSegments(segments, LSDAdvance::Params(), groups);
+    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
     ASSERT_EQ(1, groups.count());
 
     for (int strategy : { LSDAdvance::MERGE_LONGEST_FIRST, LSDAdvance::MERGE_BASELINES })

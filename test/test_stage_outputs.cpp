@@ -105,7 +105,7 @@ TEST(LSDAdvance_StageOutputs, filtered_segments_are_the_long_or_strong_ones_with
         ASSERT_GT(stats.minLength, 0.0);
         const std::vector<Vec4f>& input = stage1Input(d, o);
         std::vector<Vec4f> expected, longOnes;
-        lsda::dropShortSegments(input, stats.minLength, longOnes);
+        lsda::keepLongOrStrong(input, std::vector<float>(), stats.minLength, 0.0, longOnes);
         if (d.getKeepStrongSegments())
         {
             std::vector<float> baseResponses, responses;
@@ -133,7 +133,7 @@ TEST(LSDAdvance_StageOutputs, group_labels_partition_the_stage2_input_as_groupSe
         const std::vector<Vec4f>& input = stage2Input(d, o);
         ASSERT_EQ(input.size(), o.labels.size());
         lsda::SegmentGroups groups;
-        lsda::groupSegments(input, d.getParams(), groups);
+        lsda::groupSegments(input, lsda::GroupingParams(d.getParams()), groups);
         // Every member of a group has its group's label: -1 for a group of one, otherwise a
         // label no other group has.
         std::set<int> used;
@@ -167,9 +167,9 @@ TEST(LSDAdvance_StageOutputs, merged_segments_are_mergeGroups_of_the_stage2_inpu
         const StageOutputs o = stageOutputsOf(d);
         const std::vector<Vec4f>& input = stage2Input(d, o);
         lsda::SegmentGroups groups;
-        lsda::groupSegments(input, d.getParams(), groups);
+        lsda::groupSegments(input, lsda::GroupingParams(d.getParams()), groups);
         std::vector<Vec4f> expected;
-        lsda::mergeGroups(input, groups, d.getParams(), expected);
+        lsda::mergeGroups(input, groups, lsda::MergingParams(d.getParams()), expected);
         EXPECT_LT(expected.size(), input.size());  // something fused
         EXPECT_TRUE(bitIdentical(expected, o.merged));
     });

@@ -35,7 +35,7 @@ these intervals covers at least minCoverage of g's length.
 */
 struct CV_EXPORTS_W_SIMPLE StructuralMatchParams
 {
-    StructuralMatchParams() : maxDistance(1.0), maxAngle(5.0), minCoverage(0.75), offset(0.5) {}
+    CV_WRAP StructuralMatchParams() : maxDistance(1.0), maxAngle(5.0), minCoverage(0.75), offset(0.5) {}
 
     CV_PROP_RW double maxDistance;  //!< pixels, from a detection's centre to g's line, >= 0. Default 1.
     CV_PROP_RW double maxAngle;     //!< degrees, between undirected directions, in [0, 90]. Default 5.
@@ -49,7 +49,7 @@ struct CV_EXPORTS_W_SIMPLE StructuralMatchParams
 /** @brief Structural precision and recall of one image. */
 struct CV_EXPORTS_W_SIMPLE StructuralScore
 {
-    StructuralScore()
+    CV_WRAP StructuralScore()
         : precision(0), recall(0), matchedLength(0), detectedLength(0), coveredLength(0),
           groundTruthLength(0), found(0), groundTruthCount(0)
     {}
@@ -151,7 +151,7 @@ length).
 */
 struct CV_EXPORTS_W_SIMPLE HomographyMatchScore
 {
-    HomographyMatchScore()
+    CV_WRAP HomographyMatchScore()
         : matches(0), correct(0), precision(0), repeatability(0), localisationError(0), repeated(0),
           visible(0)
     {}
@@ -238,7 +238,7 @@ CV_EXPORTS_W Mat fundamentalFromPoses(InputArray P, InputArray pose1, InputArray
 /** @brief Epipolar scores of line matches between two frames (checkEpipolar on each match). */
 struct CV_EXPORTS_W_SIMPLE EpipolarMatchScore
 {
-    EpipolarMatchScore() : matches(0), consistent(0), inconsistent(0), undecidable(0), precision(0) {}
+    CV_WRAP EpipolarMatchScore() : matches(0), consistent(0), inconsistent(0), undecidable(0), precision(0) {}
 
     CV_PROP_RW int matches;       //!< matches evaluated
     CV_PROP_RW int consistent;    //!< EPIPOLAR_CONSISTENT

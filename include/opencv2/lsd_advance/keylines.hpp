@@ -59,7 +59,8 @@ and `response` = lineLength / max(width, height), in [0, sqrt(2)], as LSDDetecto
 length alone: these are lines without their image; LSDAdvance::detect(image, keylines) sets
 computeLineResponses()'s instead).
 */
-CV_EXPORTS void linesToKeyLines(InputArray lines, Size imageSize, std::vector<line_descriptor::KeyLine>& keylines);
+CV_EXPORTS_W void linesToKeyLines(InputArray lines, Size imageSize,
+                                  CV_OUT std::vector<line_descriptor::KeyLine>& keylines);
 
 /** @brief Converts KeyLines back to segments.
 
@@ -67,7 +68,7 @@ CV_EXPORTS void linesToKeyLines(InputArray lines, Size imageSize, std::vector<li
 @param lines Output N x 1 CV_32FC4 (std::vector<cv::Vec4f> works), in the same order:
 (x1, y1, x2, y2) = (startPointX, startPointY, endPointX, endPointY), pixels. The octave copies
 are ignored: the full-resolution endpoints are used whatever the octave. */
-CV_EXPORTS void keyLinesToLines(const std::vector<line_descriptor::KeyLine>& keylines, OutputArray lines);
+CV_EXPORTS_W void keyLinesToLines(const std::vector<line_descriptor::KeyLine>& keylines, OutputArray lines);
 #endif // HAVE_OPENCV_LINE_DESCRIPTOR
 
 //! @} lsd_advance

@@ -21,7 +21,7 @@ namespace ximgproc {
 after each stage, and wall-clock times (stage 0's includes the conversion to gray). */
 struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
 {
-    LSDAdvanceStats()
+    CV_WRAP LSDAdvanceStats()
         : baseSegments(0), mergedSegments(0), filteredSegments(0), mergeGroups(0), outputSegments(0),
           minLength(0), minResponse(0), alpha(1), baseMs(0), filterMs(0), groupingMs(0), mergingMs(0)
     {}
@@ -212,8 +212,8 @@ public:
     @param keylines Output: one KeyLine per segment detect() returns, in the same order, filled by
     linesToKeyLines() as cv::line_descriptor::LSDDetector fills octave 0, except `response`:
     computeLineResponses()'s, the length weighted by the squared contrast. Sort by it, largest
-    first, to keep a front end's N best lines. */
-    void detect(InputArray image, std::vector<line_descriptor::KeyLine>& keylines);
+    first, to keep a front end's N best lines. In Python: detectKeyLines(image) -> keylines. */
+    CV_WRAP_AS(detectKeyLines) void detect(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines);
 #endif
 
     /** @brief Runs stages 1-3 on segments from any detector; the call is a frame like detect().

@@ -3,19 +3,20 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Detects line segments in an image, each image of a folder or each frame of a video with one
-// of the methods of line_methods.hpp, optionally writes them (<stem>.txt, x1 y1 x2 y2 per row)
+// of the methods of line_methods.hpp (LSDAdvance's variants: methods/<name>.yml), optionally writes them (<stem>.txt, x1 y1 x2 y2 per row)
 // and drawn on the image (<stem>.png), and prints segments per image, the share of long
 // segments and the time of the detection. For LSDAdvance it also draws what each stage did
 // (--draw=filter,groups,merge), like the figures of the paper, from getLastStageOutputs() and
-// getLastSources().
+// getLastSources(). --write-params writes an LSDAdvance method as a method file, to start a new
+// variant from.
 
 #include "command_line.hpp"
-#include "frame_source.hpp"
 #include "line_methods.hpp"
 
 #include <opencv2/core/utility.hpp>
 #include <opencv2/core/utils/filesystem.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/lsd_advance/evaluation.hpp>
 #include <opencv2/videoio.hpp>
@@ -30,6 +31,138 @@
 using namespace cv;
 
 namespace {
+
+//--- input
+
+// File name without folder and extension.
+std::string stemOf(const std::string& path)
+{
+    const size_t slash = path.find_last_of("/\\");
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    return name.substr(0, name.rfind('.'));
+}
+
+// The gray images to detect on, one after the other: an image file, the images of a folder
+// in name order, or the frames of a video. A file of a folder that cannot be read as an image
+// is reported on stderr and skipped; with a progress label, "[label] k/n" counts the files on
+// one stderr line.
+class FrameSource
+{
+public:
+    //! Throws std::runtime_error when the input does not exist, cannot be read or holds no image.
+    explicit FrameSource(const String& input, const std::string& progressLabel = std::string())
+        : progressLabel_(progressLabel)
+    {
+        // Finds sample names such as building.jpg; keeps what it cannot find (video URLs, patterns).
+        const String path = samples::findFileOrKeep(input, true);
+        const bool exists = utils::fs::exists(path);
+        if (utils::fs::isDirectory(path))
+            paths_ = ximgproc::line_evaluation::loadSequence(path).imagePaths;  // name order; throws when there is none
+        else if (exists && haveImageReader(path))
+        {
+            paths_.push_back(path);
+            singleImage_ = true;
+        }
+        // A file named as an image (OpenCV would write one under this name) is not tried as a
+        // video: the video backends would only add their own messages to the app's error.
+        else if (exists && haveImageWriter(path))
+            throw std::runtime_error("cannot read " + path + " as an image");
+        // Streams and image-sequence patterns do not exist as files; anything else missing is
+        // reported here rather than by the video backends' warnings.
+        else if (!exists && path.find("://") == String::npos && path.find('%') == String::npos)
+            throw std::runtime_error("no such image, folder or video: " + path);
+        else
+        {
+            // The backends that cannot open the file log why; the app's error says it once.
+            const utils::logging::LogLevel logLevel =
+                utils::logging::setLogLevel(utils::logging::LOG_LEVEL_FATAL);
+            const bool opened = video_.open(path);
+            utils::logging::setLogLevel(logLevel);
+            if (!opened)
+                throw std::runtime_error("cannot read " + path + " as an image or a video");
+        }
+    }
+
+    //! Number of images, 0 when a video does not tell.
+    size_t count() const
+    {
+        return video_.isOpened() ? (size_t)std::max(0.0, video_.get(CAP_PROP_FRAME_COUNT)) : paths_.size();
+    }
+
+    //! The next image as CV_8UC1 and the stem of its output files; false after the last one.
+    //! Throws std::runtime_error when no image at all could be read.
+    bool next(Mat& gray, std::string& stem)
+    {
+        if (video_.isOpened())
+        {
+            Mat frame;
+            if (!video_.read(frame) || frame.empty())
+                return finish();
+            if (frame.channels() == 1)
+                gray = frame;
+            else
+                cvtColor(frame, gray, frame.channels() == 4 ? COLOR_BGRA2GRAY : COLOR_BGR2GRAY);
+            stem = format("frame_%06d", frameIndex_++);
+            showProgress((size_t)frameIndex_);
+            return true;
+        }
+        while (nextPath_ < paths_.size())
+        {
+            const String& path = paths_[nextPath_++];
+            showProgress(nextPath_);
+            gray = readGrayImage(path);
+            if (!gray.empty())
+            {
+                stem = stemOf(path);
+                read_++;
+                return true;
+            }
+            if (singleImage_)
+                throw std::runtime_error("cannot read " + path + " as an image");
+            skipped_.push_back(path);
+            if (progressShown_)
+                std::cerr << "\n";
+            progressShown_ = false;
+            reportSkipped(path);
+        }
+        return finish();
+    }
+
+    //! The files of a folder skipped so far as unreadable.
+    const std::vector<std::string>& skipped() const { return skipped_; }
+
+private:
+    void showProgress(size_t done)
+    {
+        if (progressLabel_.empty() || singleImage_)
+            return;
+        std::cerr << "\r[" << progressLabel_ << "] " << done;
+        if (count() > 0)
+            std::cerr << "/" << count();
+        std::cerr << std::flush;
+        progressShown_ = true;
+    }
+
+    // Ends the progress line; false, for next().
+    bool finish()
+    {
+        if (progressShown_)
+            std::cerr << "\n";
+        progressShown_ = false;
+        if (read_ == 0 && frameIndex_ == 0 && !skipped_.empty())
+            throw std::runtime_error(format("none of the %zu image files could be read", skipped_.size()));
+        return false;
+    }
+
+    std::string progressLabel_;
+    std::vector<String> paths_;
+    bool singleImage_ = false;
+    size_t nextPath_ = 0, read_ = 0;
+    std::vector<std::string> skipped_;
+    bool progressShown_ = false;
+    VideoCapture video_;
+    int frameIndex_ = 0;
+};
 
 //--- drawings of the stages
 
@@ -52,7 +185,6 @@ struct Drawings
     bool ofStages() const { return filter || groups || merge; }
 };
 
-// --draw alone means --draw=lines (the behaviour before the stage drawings).
 Drawings parseDrawings(const std::string& list)
 {
     Drawings d;
@@ -60,7 +192,7 @@ Drawings parseDrawings(const std::string& list)
     std::string kind;
     while (std::getline(ss, kind, ','))
     {
-        if (kind == "lines" || kind == "true")
+        if (kind == "lines")
             d.lines = true;
         else if (kind == "filter")
             d.filter = true;
@@ -351,7 +483,7 @@ struct Summary
     }
 };
 
-int run(const CommandLine& args)
+int run(const AppOptions& args)
 {
     const String input = args.text("input");
     const String output = args.text("output");
@@ -363,8 +495,20 @@ int run(const CommandLine& args)
     if (draw.any() && output.empty())
         throw std::runtime_error("--draw needs --output=<folder>");
 
+    const String paramsOut = args.text("write-params");
+    checkOutputFolder("write-params", paramsOut);
     const FileStorage params = openParamsFile(args.text("params"));
     const LineMethod method = makeLineMethod(args.text("method"), params.isOpened() ? params.root() : FileNode());
+    if (!paramsOut.empty())
+    {
+        if (!method.lsdAdvance)
+            throw std::runtime_error("--write-params needs an LSDAdvance method, not " + method.name);
+        writeLineMethod(paramsOut, method);
+        std::printf("wrote the parameters of %s to %s\n", method.name.c_str(), paramsOut.c_str());
+        return 0;
+    }
+    if (input.empty())
+        throw std::runtime_error("--input is required: an image, a folder of images or a video");
     if (draw.ofStages() && !method.lsdAdvance)
         throw std::runtime_error("--draw=filter, groups or merge needs an LSDAdvance method, not " + method.name);
     FrameSource source(input, "detect");
@@ -429,13 +573,14 @@ int main(int argc, char** argv)
 {
     const String keys =
         "{help h   |            | print this help }"
-        "{input i  | <none>     | an image, a folder of images (png, jpg, jpeg, ppm, pgm, bmp) or a video }"
+        "{input i  |            | an image, a folder of images (png, jpg, jpeg, ppm, pgm, bmp) or a video; required "
+                                 "unless --write-params is given }"
         "{output o |            | folder for <stem>.txt (x1 y1 x2 y2 per segment, pixel centres); created if missing }"
-        "{method m | lsdadvance | one of: " + std::string(lineMethodNames()) + " }"
+        "{method m | lsdadvance | one of: " + lineMethodList() + " }"
         "{sequence |            | the images of a folder (in name order) or a video are consecutive frames: "
                                  "LSDAdvance's inter-frame factor is on; otherwise every image is independent }"
         "{draw     |            | also write drawings (needs --output), a comma-separated list: lines (<stem>.png, the "
-                                 "segments on the image; --draw alone means lines); for LSDAdvance methods filter "
+                                 "segments on the image); for LSDAdvance methods filter "
                                  "(<stem>_filter.png: kept and dropped by the length filter), groups (<stem>_groups.png: "
                                  "the merge groups in colours), merge (<stem>_merge.png: fused segments and their pieces); "
                                  "stages = filter,groups,merge }"
@@ -444,8 +589,10 @@ int main(int argc, char** argv)
                                  "width and height >= 1, overlapping the image) of the image, enlarged to about 900 px wide }"
         "{no-segments |         | with --output, write only the drawings, not <stem>.txt }"
         "{params p |            | YAML/XML of LSDAdvance parameters saved with write(), for the lsdadvance method }"
+        "{write-params |        | write the parameters of the LSDAdvance method (with --params) to this file as a "
+                                 "method file, methods/<name>.yml, and exit }"
         "{long     | 60         | length in pixels from which a segment counts as long, > 0 }";
     const String about = "Detects line segments with LSDAdvance (or another method) and writes them to text files. "
                          "Exit status: 0, 1 on an error, 2 when unreadable files of a folder were skipped.";
-    return runSample(argc, argv, keys, about, { "sequence", "no-segments" }, { "draw" }, run);
+    return runApp(argc, argv, keys, about, { "sequence", "no-segments" }, run);
 }

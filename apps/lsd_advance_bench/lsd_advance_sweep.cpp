@@ -10,7 +10,6 @@
 // other stages, so the whole grid takes a few minutes.
 
 #include "command_line.hpp"
-#include "frame_source.hpp"
 
 #include <opencv2/core/utility.hpp>
 #include <opencv2/core/utils/filesystem.hpp>
@@ -110,7 +109,7 @@ void printRow(const Setting& s, const Score& tune, const Score* check)
     std::printf("\n");
 }
 
-int run(const CommandLine& args)
+int run(const AppOptions& args)
 {
     const String data = args.text("data");
     const bool tuneEven = args.oneOf("tune", { "even", "odd" }) == "even";
@@ -222,5 +221,5 @@ int main(int argc, char** argv)
         "{top    | 15     | rows of the sorted grid to print, >= 1 }";
     const String about = "Parameter sweep of LSDAdvance on YorkUrban, e.g. lsd_advance_sweep --data=<YorkUrban folder>. "
                          "Exit status: 0, 1 on an error, 2 when unreadable images were left out.";
-    return runSample(argc, argv, keys, about, {}, {}, run);
+    return runApp(argc, argv, keys, about, {}, run);
 }

@@ -15,7 +15,6 @@
 // long-segment share per method (--chart), and reports progress on stderr.
 
 #include "command_line.hpp"
-#include "frame_source.hpp"
 #include "line_methods.hpp"
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
 #include "line_matching.hpp"
@@ -38,6 +37,24 @@ using namespace cv::ximgproc;
 using namespace cv::ximgproc::line_evaluation;
 
 namespace {
+
+// Median time in ms of `repeats` detections on one image; lines of the last one. With
+// independent, the sequence is reset before each detection (outside the timed call).
+double timedDetect(const LineMethod& method, const Mat& gray, int repeats, std::vector<Vec4f>& lines, bool independent)
+{
+    std::vector<double> ms;
+    for (int r = 0; r < repeats; r++)
+    {
+        if (independent)
+            method.reset();
+        TickMeter tm;
+        tm.start();
+        method.detect(gray, lines);
+        tm.stop();
+        ms.push_back(tm.getTimeMilli());
+    }
+    return median(ms);
+}
 
 void meanStd(const std::vector<double>& v, double& mean, double& stddev)
 {
@@ -551,7 +568,7 @@ bool readable(const std::string& path, size_t& skipped)
     return false;
 }
 
-int run(const CommandLine& args)
+int run(const AppOptions& args)
 {
     const std::string dataset = args.oneOf("dataset", { "yorkurban", "sequence", "homography" });
     const String data = args.text("data");
@@ -577,7 +594,7 @@ int run(const CommandLine& args)
     for (const std::string& name : splitList(args.text("methods")))
         methods.push_back(makeLineMethod(name, params.isOpened() && name == "lsdadvance" ? params.root() : FileNode()));
     if (methods.empty())
-        throw std::runtime_error("--methods is empty; known: " + std::string(lineMethodNames()));
+        throw std::runtime_error("--methods is empty; known: " + lineMethodList());
     checkOutputFolder("csv", csv);
     checkOutputFolder("chart", chartPrefix);
 
@@ -692,7 +709,8 @@ int main(int argc, char** argv)
         "{rank     | own        | the response --top ranks by: own (each method's KeyLine response: LSDAdvance's "
                                   "computeLineResponses, the length for the others), length, or contrast "
                                   "(computeLineResponses for every method) }"
-        "{methods  | lsd,fld,fld_merge,edlines,plvins,lsdadvance | comma-separated methods }"
+        "{methods  | lsd,fld,fld_merge,edlines,plvins,lsdadvance | comma-separated methods (LSDAdvance's variants: "
+                                  "the files methods/<name>.yml) }"
         "{params   |            | YAML/XML of LSDAdvance parameters (write() or save()) for the lsdadvance method }"
         "{subset   | all        | yorkurban images to use: all, even or odd (by index in list.txt) }"
         "{repeats  | 1          | detections per image for the time (median), >= 1 }"
@@ -702,7 +720,7 @@ int main(int argc, char** argv)
         "{chart    |            | also write the table as SVG bar charts <chart>_time.svg, <chart>_f.svg and "
                                   "<chart>_long.svg (those of the dataset's columns) }";
     const String about = "LSDAdvance benchmark, e.g. lsd_advance_benchmark --data=<YorkUrban folder>. Methods: " +
-                         std::string(lineMethodNames()) +
+                         lineMethodList() +
                          ". Exit status: 0, 1 on an error, 2 when unreadable image files were left out.";
-    return runSample(argc, argv, keys, about, { "no-match" }, {}, run);
+    return runApp(argc, argv, keys, about, { "no-match" }, run);
 }

@@ -2,12 +2,13 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// The LBD matching front end the samples share: segments -> KeyLines -> LBD descriptors ->
-// mutual nearest neighbours under a Hamming-distance bound. OpenCV's line_descriptor does the
-// describing and matching; only the filtering of its matches is here.
+// The LBD matching front end of the benchmark (and of the tests that check its tables):
+// segments -> KeyLines -> LBD descriptors -> mutual nearest neighbours under a Hamming-distance
+// bound. OpenCV's line_descriptor does the describing and matching; only the filtering of its
+// matches is here.
 
-#ifndef OPENCV_LSD_ADVANCE_SAMPLES_LINE_MATCHING_HPP
-#define OPENCV_LSD_ADVANCE_SAMPLES_LINE_MATCHING_HPP
+#ifndef OPENCV_LSD_ADVANCE_APPS_LINE_MATCHING_HPP
+#define OPENCV_LSD_ADVANCE_APPS_LINE_MATCHING_HPP
 
 #include <opencv2/line_descriptor.hpp>
 #include <opencv2/lsd_advance.hpp>

@@ -1,0 +1,198 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The line detectors that the benchmark apps and the perf suite compare, by name. Every
+// LSDAdvance variant is a parameters file of the methods folder, methods/<name>.yml: what
+// Algorithm::save() writes, plus the title the tables print. The other detectors, OpenCV's as
+// they are and the optional peer ELSED, are constructed here.
+
+#ifndef OPENCV_LSD_ADVANCE_APPS_LINE_METHODS_HPP
+#define OPENCV_LSD_ADVANCE_APPS_LINE_METHODS_HPP
+
+#include <opencv2/core.hpp>
+#include <opencv2/core/utility.hpp>
+#include <opencv2/core/utils/filesystem.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/lsd_advance.hpp>
+#include <opencv2/ximgproc.hpp>
+
+#ifdef LSD_ADVANCE_HAVE_ELSED
+#include "ELSED.h"   // the optional peer, from its own folder (cmake -DLSD_ADVANCE_ELSED_DIR=<dir>)
+#endif
+
+#include <algorithm>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#ifndef LSD_ADVANCE_METHODS_DIR
+#error "LSD_ADVANCE_METHODS_DIR must name the folder of the LSDAdvance method files (set by the build)"
+#endif
+
+struct LineMethod
+{
+    std::string name;  //!< the title of the tables
+    //! Detects on a gray image; consecutive calls may form a sequence.
+    std::function<void(const cv::Mat&, std::vector<cv::Vec4f>&)> detect;
+    //! Starts a new sequence (no-op for detectors without sequence state).
+    std::function<void()> reset;
+    //! The LSDAdvance detector behind the method, for its stage outputs; empty for other detectors.
+    cv::Ptr<cv::ximgproc::LSDAdvance> lsdAdvance;
+};
+
+//! The folder of the LSDAdvance method files.
+inline std::string lineMethodsFolder()
+{
+    return LSD_ADVANCE_METHODS_DIR;
+}
+
+//! The methods that are not LSDAdvance variants.
+inline std::vector<std::string> otherLineMethodNames()
+{
+    return { "lsd", "fld", "fld_merge", "edlines", "plvins"
+#ifdef LSD_ADVANCE_HAVE_ELSED
+             , "elsed"
+#endif
+    };
+}
+
+//! Every method: the others, then the method files in name order.
+inline std::vector<std::string> lineMethodNames()
+{
+    std::vector<std::string> names = otherLineMethodNames();
+    std::vector<cv::String> files;
+    cv::glob(cv::utils::fs::join(lineMethodsFolder(), "*.yml"), files);
+    CV_Assert(!files.empty());
+    for (const cv::String& file : files)
+    {
+        const size_t slash = file.find_last_of("/\\") + 1;
+        names.push_back(file.substr(slash, file.size() - slash - 4));
+    }
+    return names;
+}
+
+//! lineMethodNames() as one line, for messages and help texts.
+inline std::string lineMethodList()
+{
+    std::string list;
+    for (const std::string& name : lineMethodNames())
+        list += (list.empty() ? "" : ", ") + name;
+    return list;
+}
+
+inline LineMethod lineMethodOf(const std::string& name,
+                               const std::function<void(const cv::Mat&, std::vector<cv::Vec4f>&)>& detect)
+{
+    return LineMethod{ name, detect, [] {}, cv::Ptr<cv::ximgproc::LSDAdvance>() };
+}
+
+//! PL-VINS's LSD set-up: half scale, looser density, lines >= 1/8 of the smaller image side.
+inline LineMethod plVinsMethod()
+{
+    const cv::Ptr<cv::LineSegmentDetector> lsd =
+        cv::createLineSegmentDetector(cv::LSD_REFINE_STD, 0.5, 0.6, 2.0, 22.5, 0, 0.6, 1024);
+    return lineMethodOf("PL-VINS LSD", [lsd](const cv::Mat& gray, std::vector<cv::Vec4f>& lines) {
+        std::vector<cv::Vec4f> all;
+        lsd->detect(gray, all);
+        const double minLength = 0.125 * std::min(gray.cols, gray.rows);
+        lines.clear();
+        for (const cv::Vec4f& l : all)
+            if (std::hypot(l[2] - l[0], l[3] - l[1]) >= minLength)
+                lines.push_back(l);
+    });
+}
+
+//! The LSDAdvance variant of methods/<name>.yml; params, when given, are read on top of it.
+inline LineMethod lsdAdvanceMethod(const std::string& name, const cv::FileNode& params)
+{
+    const std::vector<std::string> known = lineMethodNames();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+        CV_Error_(cv::Error::StsBadArg, ("unknown method '%s'; known: %s", name.c_str(), lineMethodList().c_str()));
+    const std::string path = cv::utils::fs::join(lineMethodsFolder(), name + ".yml");
+    const cv::Ptr<cv::ximgproc::LSDAdvance> detector = cv::ximgproc::createLSDAdvance();
+    const cv::FileStorage file(path, cv::FileStorage::READ);
+    const cv::FileNode variant = file[detector->getDefaultName()];
+    const std::string title = file["title"].empty() ? std::string() : (std::string)file["title"];
+    if (variant.empty() || title.empty())
+        CV_Error_(cv::Error::StsParseError, ("the method file %s needs a map '%s' (LSDAdvance::save()) and a 'title'",
+                                             path.c_str(), detector->getDefaultName().c_str()));
+    detector->read(variant);
+    if (!params.empty())
+    {
+        // Algorithm::save() nests the parameters under the algorithm's name; write() does not.
+        const cv::FileNode named = params[detector->getDefaultName()];
+        detector->read(named.empty() ? params : named);
+    }
+    return LineMethod{ title,
+                       [detector](const cv::Mat& gray, std::vector<cv::Vec4f>& lines) { detector->detect(gray, lines); },
+                       [detector] { detector->reset(); }, detector };
+}
+
+//! Writes an LSDAdvance method as a method file: Algorithm::save()'s map, then the title.
+//! A method file is canonical when this writes it again unchanged.
+inline void writeLineMethod(const std::string& path, const LineMethod& method)
+{
+    CV_Assert(method.lsdAdvance);
+    cv::FileStorage file(path, cv::FileStorage::WRITE);
+    if (!file.isOpened())
+        CV_Error_(cv::Error::StsError, ("cannot write %s", path.c_str()));
+    file << method.lsdAdvance->getDefaultName() << "{";
+    method.lsdAdvance->write(file);
+    file << "}" << "title" << method.name;
+}
+
+//! One of lineMethodNames(); params, when given, configure the method "lsdadvance" (and only it).
+//! Throws a cv::Exception that lists the known names for an unknown one.
+inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& params = cv::FileNode())
+{
+    using namespace cv;
+    if (!params.empty() && name != "lsdadvance")
+        CV_Error_(Error::StsBadArg, ("parameters apply to the lsdadvance method only, not to '%s'", name.c_str()));
+    if (name == "lsd")
+    {
+        const Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
+        return lineMethodOf("LSD", [lsd](const Mat& g, std::vector<Vec4f>& l) { lsd->detect(g, l); });
+    }
+    if (name == "fld" || name == "fld_merge")
+    {
+        const bool merge = name == "fld_merge";
+        const Ptr<ximgproc::FastLineDetector> fld = ximgproc::createFastLineDetector(10, 1.414213562f, 50, 50, 3, merge);
+        return lineMethodOf(merge ? "FLD+merge" : "FLD", [fld](const Mat& g, std::vector<Vec4f>& l) { fld->detect(g, l); });
+    }
+    if (name == "edlines")
+    {
+        const Ptr<ximgproc::EdgeDrawing> ed = ximgproc::createEdgeDrawing();
+        return lineMethodOf("EDLines", [ed](const Mat& g, std::vector<Vec4f>& l) {
+            ed->detectEdges(g);
+            ed->detectLines(l);
+        });
+    }
+    if (name == "plvins")
+        return plVinsMethod();
+#ifdef LSD_ADVANCE_HAVE_ELSED
+    if (name == "elsed")
+    {
+        // ELSED (Suarez et al., Pattern Recognition 2022) with its defaults.
+        const std::shared_ptr<upm::ELSED> elsed = std::make_shared<upm::ELSED>();
+        return lineMethodOf("ELSED", [elsed](const Mat& g, std::vector<Vec4f>& l) { l = elsed->detect(g); });
+    }
+#else
+    if (name == "elsed")
+        CV_Error(Error::StsBadArg, "method 'elsed' needs the ELSED peer: configure the build with "
+                                   "-DLSD_ADVANCE_ELSED_DIR=<ELSED source folder>");
+#endif
+    return lsdAdvanceMethod(name, params);
+}
+
+//! Median of the values (the upper one of the two middle values for an even count); 0 for none.
+inline double median(std::vector<double> values)
+{
+    if (values.empty())
+        return 0.0;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
+
+#endif
