@@ -15,11 +15,13 @@
 //   test of a neighbour has no branch (whether a neighbour is free is as good as random), and the
 //   region's direction is the sum of its unit vectors, kept in float;
 // - the NFA (refine = LSD_REFINE_ADV only): log(n!) from a table grown on demand.
-// Two options of its own, which leave the LSD algorithm at their defaults of 1 and 0:
-// - seeds (LSDParams::seedGradientRatio): regions are grown in order of decreasing gradient, so a
-//   region only takes pixels weaker than its seed. Leaving out the seeds below a gradient level
-//   keeps exactly the regions of the stronger seeds and grows none of the weak ones, which are
-//   the many small regions of texture and noise;
+// Options of its own, each of which gives the LSD algorithm at 1 or 0:
+// - seeds above a gradient level (LSDParams::seedGradientRatio): regions are grown in order of
+//   decreasing gradient, so a region only takes pixels weaker than its seed. Leaving out the seeds
+//   below a level keeps exactly the regions of the stronger seeds and grows none of the weak ones;
+// - seeds on edges (LSDParams::seedAlignedNeighbours): a pixel seeds only when its neighbours
+//   along its level line are aligned with it, as on an edge. Half of the pixels grown otherwise
+//   are in regions of texture too small to be segments;
 // - tiles (LSDParams::tileHeight): the image is cut into horizontal tiles laid out from its size
 //   alone. The regions of each tile grow over its own rows only, each tile in its own task; the
 //   regions that reach the seam between two tiles are set aside, and those 8-connected across
@@ -31,6 +33,7 @@
 #include "precomp.hpp"
 #include "fast_lsd.hpp"
 #include "opencv2/core/hal/hal.hpp"
+#include "opencv2/core/hal/intrin.hpp"
 #include <functional>
 
 namespace cv {
@@ -41,6 +44,19 @@ namespace {
 
 // The length of a unit level-line vector in the fixed point of FastLsd::level.
 constexpr float kUnit = 16384.f;
+
+// sin(22.5 deg) in that fixed point: a level line steps along an axis beyond it.
+constexpr int kStep = (int)(0.38268343 * kUnit);
+
+// For a mask of four lanes: the set lanes first (a left-pack), and how many are set.
+alignas(16) const int kPackedLanes[16][4] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 1, 0, 0, 0 }, { 0, 1, 0, 0 },
+                                              { 2, 0, 0, 0 }, { 0, 2, 0, 0 }, { 1, 2, 0, 0 }, { 0, 1, 2, 0 },
+                                              { 3, 0, 0, 0 }, { 0, 3, 0, 0 }, { 1, 3, 0, 0 }, { 0, 1, 3, 0 },
+                                              { 2, 3, 0, 0 }, { 0, 2, 3, 0 }, { 1, 2, 3, 0 }, { 0, 1, 2, 3 } };
+const int kLaneCount[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+
+// How far past its last seed FastLsd::seedsOfRow may write.
+constexpr size_t kCompactionSlack = 4;
 
 // Rows of the image whose gradients are computed by one task of the parallel loop.
 constexpr int kRowsPerStripe = 16;
@@ -234,10 +250,22 @@ inline int FastLsd::binOf(int pixel) const
     return binOfNorm(gradNorm[pixel], binScale, numBins);
 }
 
+inline int FastLsd::alignedNeighbours(int pixel) const
+{
+    // The neighbour nearest to the level-line direction u: a step along x where |u_x| > sin(22.5
+    // deg), along y where |u_y| is, and the one opposite.
+    const Vec2s u = level[pixel];
+    const int dx = (u[0] > kStep) - (u[0] < -kStep), dy = (u[1] > kStep) - (u[1] < -kStep);
+    const int offset = dy * stride + dx;
+    const Vec2s a = level[pixel + offset], b = level[pixel - offset];
+    return (isFree(a) & (u[0] * a[0] + u[1] * a[1] > alignedDot)) + (isFree(b) & (u[0] * b[0] + u[1] * b[1] > alignedDot));
+}
+
 FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
     : refine(p.refine), scale(p.scale), sigmaScale(p.sigmaScale), quant(p.quant),
       angleTolerance(p.angleTolerance), logEps(p.logEps), densityThreshold(p.densityThreshold),
-      seedGradientRatio(p.seedGradientRatio), numBins(p.numBins), tileHeight(p.tileHeight), acrossSeams(makePtr<Regions>())
+      seedGradientRatio(p.seedGradientRatio), numBins(p.numBins), seedAlignedNeighbours(p.seedAlignedNeighbours),
+      tileHeight(p.tileHeight), acrossSeams(makePtr<Regions>())
 {
     acrossSeams->fitsAnyRegion = false;
     CV_CheckGT(scale, 0.0, "FastLsd: scale must be positive");
@@ -247,6 +275,8 @@ FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
     CV_CheckGE(numBins, 1, "FastLsd: the number of bins must be at least 1");
     CV_CheckLE(numBins, 65536, "FastLsd: the number of bins must be at most 65536");
     CV_CheckGE(seedGradientRatio, 1.0, "FastLsd: the seed gradient ratio must be at least 1");
+    CV_CheckGE(seedAlignedNeighbours, 0, "FastLsd: a seed's aligned neighbours are 0, 1 or 2");
+    CV_CheckLE(seedAlignedNeighbours, 2, "FastLsd: a seed's aligned neighbours are 0, 1 or 2");
     CV_CheckGE(tileHeight, 0, "FastLsd: the tile height must be 0 (no tiles) or positive");
 }
 
@@ -346,6 +376,7 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
     minRegionSize = (int)(-logNT / std::log10(probability));
     // Once per frame: most seeds grow no region, and a cosine per seed cost 4 % of the time.
     cosUnit = alignmentLimit(tolerance);
+    alignedDot = (int)std::floor((double)cosUnit * kUnit);
 
     parallel_for_(Range(0, (int)tiles.size()), TileRegions(*this), (double)tiles.size());
     joinAcrossSeams();
@@ -413,24 +444,15 @@ void FastLsd::orderTile(Tile& tile)
         defined += rowDefined[y];
     Regions& r = tile.regions;
     r.reserve(defined);
-    // The seeds in raster order, in regionIndex until the regions need it: the pixels whose norm
-    // reaches seedNorm (all of them free: the tile's regions have not grown yet), and every
-    // defined pixel of a row next to a seam: a segment that crosses it from a stronger part in
-    // the other tile has its part here grown and joined. The compaction writes every pixel and
-    // moves on past the seeds (no branch: seeds and other pixels alternate at random in textured
-    // areas), so it writes one past the last.
+    // The seeds in raster order, in regionIndex until the regions need it (all of them free: the
+    // tile's regions have not grown yet). Every defined pixel of a row next to a seam seeds: a
+    // segment that crosses it from a stronger part in the other tile has its part here grown and
+    // joined; the neighbours across the seam are another tile's, which grows at the same time.
     int* next = r.regionIndex.data();
     for (int y = tile.y0; y < tile.y1; y++)
     {
-        const int row = (y + 1) * stride + 1;
-        const float* norm = &gradNorm[row];
         const bool nextToSeam = (y == tile.y0 && tile.seamAbove) || (y == tile.y1 - 1 && tile.seamBelow);
-        const float least = nextToSeam ? FLT_MIN : seedNorm;
-        for (int x = 0; x < width - 1; x++)
-        {
-            *next = row + x;
-            next += norm[x] >= least;
-        }
+        next = nextToSeam ? seedsOfRow(y, FLT_MIN, false, next) : seedsOfRow(y, seedNorm, seedAlignedNeighbours > 0, next);
     }
     const int count = (int)(next - r.regionIndex.data());
     r.seeds.resize(count);
@@ -448,6 +470,59 @@ void FastLsd::orderTile(Tile& tile)
     }
     for (int i = 0; i < count; i++)
         r.seeds[counts[numBins - 1 - binOf(r.regionIndex[i])]++] = r.regionIndex[i];
+}
+
+int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
+{
+    // A compaction: every pixel is written and the end moves on past the seeds (no branch: seeds
+    // and other pixels alternate at random in textured areas), so it writes past the last, by up
+    // to kCompactionSlack.
+    const int row = (y + 1) * stride + 1, n = width - 1;
+    const float* norm = &gradNorm[row];
+    int x = 0;
+    if (!onEdges)
+    {
+        for (; x < n; x++)
+        {
+            *next = row + x;
+            next += norm[x] >= least;
+        }
+        return next;
+    }
+#if CV_SIMD128
+    // Four pixels at a time: their dot products with their 8 neighbours (interleaved 16-bit pairs:
+    // one v_dotprod per neighbour), of which the level line picks two, as alignedNeighbours does.
+    const short* u = &level[row][0];
+    const v_int32x4 zero = v_setzero_s32(), limit = v_setall_s32(alignedDot), step = v_setall_s32(kStep);
+    const v_int32x4 minusStep = v_setall_s32(-kStep), needed = v_setall_s32(seedAlignedNeighbours);
+    const v_float32x4 leastNorm = v_setall_f32(least);
+    for (; x + 4 <= n; x += 4)
+    {
+        const v_int16x8 centre = v_load(u + 2 * x);
+        // -1 where the neighbour at the offset is free and aligned, 0 elsewhere.
+        const auto aligned = [&](int offset) {
+            const v_int16x8 v = v_load(u + 2 * (x + offset));
+            return (v_dotprod(centre, v) > limit) & (v_reinterpret_as_s32(v) != zero);
+        };
+        const v_int32x4 both = v_reinterpret_as_s32(centre);
+        const v_int32x4 ux = v_shr<16>(v_shl<16>(both)), uy = v_shr<16>(both);
+        const v_int32x4 alongX = (ux > step) | (ux < minusStep), alongY = (uy > step) | (uy < minusStep);
+        const v_int32x4 horizontal = aligned(-1) + aligned(1), vertical = aligned(-stride) + aligned(stride);
+        const v_int32x4 falling = aligned(-stride - 1) + aligned(stride + 1), rising = aligned(-stride + 1) + aligned(stride - 1);
+        const v_int32x4 diagonal = v_select((ux ^ uy) >= zero, falling, rising);
+        const v_int32x4 minusCount = v_select(alongX & alongY, diagonal, v_select(alongX, horizontal, vertical));
+        // The seeds' indices packed to the front of four, from a table (writes up to 3 past them).
+        const int seeds = v_signmask(v_reinterpret_as_s32(v_load(norm + x) >= leastNorm) & ((zero - minusCount) >= needed));
+        v_store(next, v_setall_s32(row + x) + v_load(kPackedLanes[seeds]));
+        next += kLaneCount[seeds];
+    }
+#endif
+    for (; x < n; x++)
+    {
+        *next = row + x;
+        next += (norm[x] >= least) & (alignedNeighbours(row + x) >= seedAlignedNeighbours);
+    }
+    return next;
 }
 
 void FastLsd::joinAcrossSeams()
@@ -567,9 +642,9 @@ void FastLsd::joinAcrossSeams()
 
 void FastLsd::Regions::reserve(size_t pixels)
 {
-    // regionIndex holds one more: the compaction of the seeds writes one past the last.
-    if (regionIndex.size() < pixels + 1)
-        regionIndex.resize(pixels + 1);
+    // regionIndex holds more: the compaction of the seeds writes past the last.
+    if (regionIndex.size() < pixels + kCompactionSlack)
+        regionIndex.resize(pixels + kCompactionSlack);
     if (regionVector.size() < pixels)
         regionVector.resize(pixels);
 }

@@ -18,7 +18,8 @@ namespace lsda {
 
 //! The LSD algorithm with OpenCV's LineSegmentDetector parameters and output convention (segments
 //! (x1, y1, x2, y2), pixel centres at integer coordinates, brighter side on the left), and two
-//! options of its own (LSDParams::seedGradientRatio, LSDParams::tileHeight). Every buffer is kept
+//! options of its own (LSDParams::seedGradientRatio, LSDParams::seedAlignedNeighbours,
+//! LSDParams::tileHeight). Every buffer is kept
 //! by the object and reused, so that a sequence of frames of one size allocates nothing once
 //! warm. Not safe to call from two threads at once; it runs its own work in cv::parallel_for_.
 class CV_EXPORTS FastLsd
@@ -51,6 +52,11 @@ private:
     void joinAcrossSeams();
     //! Bin of a pixel in the pseudo-ordering.
     int binOf(int pixel) const;
+    //! How many of the two 8-neighbours of a pixel along its level line are aligned with it.
+    int alignedNeighbours(int pixel) const;
+    //! Writes from `next` on the pixels of row y whose norm reaches least and, when onEdges, with
+    //! seedAlignedNeighbours aligned neighbours; returns the end.
+    int* seedsOfRow(int y, float least, bool onEdges, int* next) const;
     //! cos(tolerance) in the scale of the level-line vectors: Regions::growRegion's argument.
     static float alignmentLimit(double tolerance);
     double rectLogNfa(const Rect& rect, std::vector<double>& logFactorials) const;
@@ -59,7 +65,7 @@ private:
     // Parameters (LSD's and ours), resolved to what the loops use.
     int refine;
     double scale, sigmaScale, quant, angleTolerance, logEps, densityThreshold, seedGradientRatio;
-    int numBins, tileHeight;
+    int numBins, seedAlignedNeighbours, tileHeight;
 
     // Per-frame state, sized for the largest frame seen (row stride = width + 1; one border row
     // and column of "undefined" pixels above and left, so that the 8 neighbours of any pixel with
@@ -72,6 +78,7 @@ private:
     double logNT = 0;
     double tolerance = 0, probability = 0;  //!< the angle tolerance in radians, and as a probability
     float cosUnit = 0;
+    int alignedDot = 0;             //!< two unit vectors are aligned when their dot product exceeds it
     int minRegionSize = 0;
     //! Unit level-line vector (-gy, gx) / |g| of each free pixel, times kUnit; (0, 0) for a pixel
     //! without a defined gradient, already in a region, or on a seam while the tiles grow.

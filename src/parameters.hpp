@@ -52,6 +52,7 @@
     X(double, densityThreshold, 0.7, Range::real(0, CLOSED, 1, OPEN), "lsdDensityThreshold")                       \
     X(int, numBins, 1024, Range::real(1, CLOSED, 65536, CLOSED), "lsdNumBins")                                     \
     X(double, seedGradientRatio, 2.5, Range::real(1, CLOSED, 100, CLOSED), nullptr)                                 \
+    X(int, seedAlignedNeighbours, 2, Range::real(0, CLOSED, 2, CLOSED), nullptr)                                   \
     X(int, tileHeight, 64, Range::real(16, CLOSED, 100000, CLOSED, " px").orValue(0, "no tiles"), nullptr)
 
 // LSDAdvance::FLDParams: X(type, field, default, range, key in files of version 4.6.0)

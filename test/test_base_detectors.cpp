@@ -76,7 +76,8 @@ std::vector<Vec4f> piecesAlong(const std::vector<Vec4f>& lines, const Vec4f& sid
 // The LSDParams fields documented "BASE_FAST_LSD only".
 bool onlyForFastLsd(const ParameterAccess& p)
 {
-    return p.name == "LSDParams::seedGradientRatio" || p.name == "LSDParams::tileHeight";
+    return p.name == "LSDParams::seedGradientRatio" || p.name == "LSDParams::seedAlignedNeighbours" ||
+           p.name == "LSDParams::tileHeight";
 }
 
 Ptr<LSDAdvance> onBase(int base, bool stages)
@@ -209,6 +210,7 @@ TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
         { "LSDParams::densityThreshold", 0.95, "LSDParams::refine", LSD_REFINE_STD },
         { "LSDParams::numBins", 4, nullptr, 0 },
         { "LSDParams::seedGradientRatio", 5.0, nullptr, 0 },
+        { "LSDParams::seedAlignedNeighbours", 0, nullptr, 0 },
         { "LSDParams::tileHeight", 16, nullptr, 0 },
         { "FLDParams::lengthThreshold", 30, nullptr, 0 },
         { "FLDParams::distanceThreshold", 3.0, nullptr, 0 },

@@ -420,6 +420,8 @@ def test_base_struct_round_trips_and_a_bad_field_changes_nothing(struct):
             setattr(params, name, not value)
         elif isinstance(value, float):
             setattr(params, name, value * 0.9)
+        elif name == "seedAlignedNeighbours":  # 0, 1 or 2
+            setattr(params, name, value - 1)
         elif name not in ("refine", "EdgeDetectionOperator", "cannyApertureSize"):
             setattr(params, name, value + 2 if value > 0 else 20)
     set_(params)
