@@ -120,6 +120,60 @@ void levelLines(const uchar* __restrict above, const uchar* __restrict below, in
     }
 }
 
+// The gradient pass of a row: the norm |g| / 2 (0 where undefined), the unit level-line vector
+// (0, 0 where undefined), the maximum of gx^2 + gy^2 and the count of defined pixels. Eight pixels
+// at a time in one pass with the same float operations as the two loops above (bit-identical),
+// which do the rest of the row.
+void gradientRow(const uchar* above, const uchar* below, int n, int threshold, float* norm, short* level,
+                 int& rowMax, int& defined)
+{
+    int x = 0, maxNorm2 = 0, count = 0;
+#if CV_SIMD128
+    const v_int32x4 limit = v_setall_s32(threshold), one = v_setall_s32(1);
+    const v_float32x4 unit = v_setall_f32(kUnit), half = v_setall_f32(0.5f);
+    v_int32x4 maxima = v_setzero_s32(), counts = v_setzero_s32();
+    for (; x + 8 <= n; x += 8)
+    {
+        const v_int16x8 a = v_reinterpret_as_s16(v_load_expand(above + x)), b = v_reinterpret_as_s16(v_load_expand(above + x + 1));
+        const v_int16x8 c = v_reinterpret_as_s16(v_load_expand(below + x)), d = v_reinterpret_as_s16(v_load_expand(below + x + 1));
+        const v_int16x8 da = d - a, bc = b - c, gx = da + bc, gy = da - bc;
+        v_int16x8 pairs[2];
+        v_zip(gx, gy, pairs[0], pairs[1]);
+        v_int32x4 gx32[2], gy32[2];
+        v_expand(gx, gx32[0], gx32[1]);
+        v_expand(gy, gy32[0], gy32[1]);
+        v_int32x4 ux[2], uy[2];
+        for (int h = 0; h < 2; h++)
+        {
+            const v_int32x4 n2 = v_dotprod(pairs[h], pairs[h]);
+            const v_int32x4 isDefined = n2 > limit;
+            maxima = v_max(maxima, n2);
+            counts -= isDefined;
+            const v_float32x4 root = v_sqrt(v_cvt_f32(n2 + ((n2 == v_setzero_s32()) & one)));
+            const v_float32x4 def = v_cvt_f32(isDefined & one);
+            const v_float32x4 scale = def * (unit / root);
+            ux[h] = v_trunc(v_cvt_f32(v_setzero_s32() - gy32[h]) * scale);
+            uy[h] = v_trunc(v_cvt_f32(gx32[h]) * scale);
+            v_store(norm + x + 4 * h, root * (half * def));
+        }
+        v_store_interleave(level + 2 * x, v_pack(ux[0], ux[1]), v_pack(uy[0], uy[1]));
+    }
+    maxNorm2 = v_reduce_max(maxima);
+    count = v_reduce_sum(counts);
+#endif
+    if (x < n)
+    {
+        int tailMax, tailDefined;
+        gradientNorms(above + x, below + x, n - x, threshold, norm + x, tailMax, tailDefined);
+        hal::sqrt32f(norm + x, norm + x, n - x);
+        levelLines(above + x, below + x, n - x, threshold, norm + x, level + 2 * x);
+        maxNorm2 = std::max(maxNorm2, tailMax);
+        count += tailDefined;
+    }
+    rowMax = maxNorm2;
+    defined = count;
+}
+
 // Whether a pixel's vector is not (0, 0): it has a defined gradient and is in no region yet.
 inline bool isFree(const Vec2s& u)
 {
@@ -305,9 +359,7 @@ public:
             const uchar* below = image.ptr<uchar>(y + 1);
             const size_t row = (size_t)(y + 1) * lsd.stride + 1;
             float* norm = &lsd.gradNorm[row];
-            gradientNorms(above, below, n, lsd.threshold, norm, lsd.rowMaxNorm2[y], lsd.rowDefined[y]);
-            hal::sqrt32f(norm, norm, n);
-            levelLines(above, below, n, lsd.threshold, norm, &lsd.level[row][0]);
+            gradientRow(above, below, n, lsd.threshold, norm, &lsd.level[row][0], lsd.rowMaxNorm2[y], lsd.rowDefined[y]);
             lsd.level[row - 1] = lsd.level[row + n] = Vec2s(0, 0);
         }
     }
