@@ -267,6 +267,9 @@ public:
     //! Whether regionIndex and regionVector hold any region that can grow (a tile's: all its
     //! defined pixels); otherwise they grow with the region.
     bool fitsAnyRegion = true;
+    //! Whether the pixels' vectors are kept in regionVector and releasedVector: only the
+    //! refinement grows a region again (4 bytes per defined pixel otherwise).
+    bool keepsVectors = true;
     //! While a tile grows: the buffer indices from which a pixel is in the tile's first row, from
     //! which below its last; the rows beyond belong to other tiles (no limit at the image's border).
     int firstRow = 0, firstRowEnd = 0, lastRow = INT_MAX;
@@ -495,6 +498,7 @@ void FastLsd::orderTile(Tile& tile)
     for (int y = tile.y0; y < tile.y1; y++)
         defined += rowDefined[y];
     Regions& r = tile.regions;
+    r.keepsVectors = refine >= LSD_REFINE_STD;
     r.reserve(defined);
     // The seeds in raster order, in regionIndex until the regions need it (all of them free: the
     // tile's regions have not grown yet). Every defined pixel of a row next to a seam seeds: a
@@ -580,6 +584,7 @@ int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
 void FastLsd::joinAcrossSeams()
 {
     Regions& joined = *acrossSeams;
+    joined.keepsVectors = refine >= LSD_REFINE_STD;
     joined.segments.clear();
     if (tiles.size() == 1)
         return;
@@ -680,7 +685,8 @@ void FastLsd::joinAcrossSeams()
         const auto append = [&](int k) {
             const Regions& r = partOf(k, begin, end);
             std::copy(r.releasedIndex.begin() + begin, r.releasedIndex.begin() + end, joined.regionIndex.begin() + joined.regionSize);
-            std::copy(r.releasedVector.begin() + begin, r.releasedVector.begin() + end, joined.regionVector.begin() + joined.regionSize);
+            if (joined.keepsVectors)
+                std::copy(r.releasedVector.begin() + begin, r.releasedVector.begin() + end, joined.regionVector.begin() + joined.regionSize);
             joined.regionSize += end - begin;
             joined.regionSum += r.releasedSum[k - releasedFirst[tileOf(k)]];
         };
@@ -697,7 +703,7 @@ void FastLsd::Regions::reserve(size_t pixels)
     // regionIndex holds more: the compaction of the seeds writes past the last.
     if (regionIndex.size() < pixels + kCompactionSlack)
         regionIndex.resize(pixels + kCompactionSlack);
-    if (regionVector.size() < pixels)
+    if (keepsVectors && regionVector.size() < pixels)
         regionVector.resize(pixels);
 }
 
@@ -784,7 +790,8 @@ bool FastLsd::Regions::releaseAtSeams(const FastLsd& lsd, Tile& tile)
             tile.releasedBelow[q - lastRow - 1] = region;
     }
     releasedIndex.insert(releasedIndex.end(), regionIndex.begin(), regionIndex.begin() + regionSize);
-    releasedVector.insert(releasedVector.end(), regionVector.begin(), regionVector.begin() + regionSize);
+    if (keepsVectors)
+        releasedVector.insert(releasedVector.end(), regionVector.begin(), regionVector.begin() + regionSize);
     releasedStart.push_back((int)releasedIndex.size());
     releasedSum.push_back(regionSum);
     return true;
@@ -795,20 +802,22 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
 {
     // A pixel joins when its unit level-line vector u is within the tolerance of the region's
     // direction, the sum S of its pixels' vectors: u.S >= cos(tolerance) |u| |S| (= limit). A pixel
-    // that joins gives its vector to regionVector and keeps (0, 0). With an acute tolerance the test
+    // that joins keeps (0, 0), its vector going to regionVector when kept. With an acute tolerance the test
     // is strict, so that a (0, 0) vector fails it without a test of its own; equality has no
     // weight on real data.
-    if (mayOutgrow && regionVector.size() < 9)
+    if (mayOutgrow && regionIndex.size() < 9 + kCompactionSlack)
         reserve(9);
     Vec2s* u = lsd.level.data();
     int* region = regionIndex.data();
     Vec2s* kept = regionVector.data();
-    int capacity = (int)regionVector.size();
+    const bool keeping = keepsVectors;
+    int capacity = (int)(regionIndex.size() - kCompactionSlack);
 
     float sx = u[seed][0], sy = u[seed][1];
     float limit = cosUnit * std::sqrt(sx * sx + sy * sy);
     region[0] = seed;
-    kept[0] = u[seed];
+    if (keeping)
+        kept[0] = u[seed];
     u[seed] = Vec2s(0, 0);
     int size = 1;
     auto visit = [&](int q) {
@@ -818,8 +827,9 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
         const bool joins = acute ? d > limit : (isFree(v) & (d >= limit));
         if (!joins)
             return;
-        region[size] = q;
-        kept[size++] = v;
+        if (keeping)
+            kept[size] = v;
+        region[size++] = q;
         u[q] = Vec2s(0, 0);
         sx += v[0];
         sy += v[1];
@@ -835,7 +845,7 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
             reserve(2 * (size_t)capacity + 8);
             region = regionIndex.data();
             kept = regionVector.data();
-            capacity = (int)regionVector.size();
+            capacity = (int)(regionIndex.size() - kCompactionSlack);
         }
         const int c = region[i];
         // In a tile, the neighbours in the rows of the tiles above and below are not its own.
