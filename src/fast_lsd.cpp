@@ -15,12 +15,25 @@
 //   test of a neighbour has no branch (whether a neighbour is free is as good as random), and the
 //   region's direction is the sum of its unit vectors, kept in float;
 // - the NFA (refine = LSD_REFINE_ADV only): log(n!) from a table grown on demand.
-// The gradient runs in parallel over rows; everything else is sequential, so the output does not
-// depend on the number of threads.
+// Options of its own, each of which gives the LSD algorithm at 1 or 0:
+// - seeds above a gradient level (LSDParams::seedGradientRatio): regions are grown in order of
+//   decreasing gradient, so a region only takes pixels weaker than its seed. Leaving out the seeds
+//   below a level keeps exactly the regions of the stronger seeds and grows none of the weak ones;
+// - seeds on edges (LSDParams::seedAlignedNeighbours): a pixel seeds only when its neighbours
+//   along its level line are aligned with it, as on an edge. Half of the pixels grown otherwise
+//   are in regions of texture too small to be segments;
+// - tiles (LSDParams::tileHeight): the image is cut into horizontal tiles laid out from its size
+//   alone. The regions of each tile grow over its own rows only, each tile in its own task; the
+//   regions that reach the seam between two tiles are set aside, and those 8-connected across
+//   it with the same direction are then joined into one, so that a segment crossing a seam comes
+//   out whole. The output does not depend on the number of threads.
+// The gradient runs in parallel over rows, the regions over tiles; nothing else depends on the
+// order of the tasks.
 
 #include "precomp.hpp"
 #include "fast_lsd.hpp"
 #include "opencv2/core/hal/hal.hpp"
+#include "opencv2/core/hal/intrin.hpp"
 #include <functional>
 
 namespace cv {
@@ -31,6 +44,19 @@ namespace {
 
 // The length of a unit level-line vector in the fixed point of FastLsd::level.
 constexpr float kUnit = 16384.f;
+
+// sin(22.5 deg) in that fixed point: a level line steps along an axis beyond it.
+constexpr int kStep = (int)(0.38268343 * kUnit);
+
+// For a mask of four lanes: the set lanes first (a left-pack), and how many are set.
+alignas(16) const int kPackedLanes[16][4] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 1, 0, 0, 0 }, { 0, 1, 0, 0 },
+                                              { 2, 0, 0, 0 }, { 0, 2, 0, 0 }, { 1, 2, 0, 0 }, { 0, 1, 2, 0 },
+                                              { 3, 0, 0, 0 }, { 0, 3, 0, 0 }, { 1, 3, 0, 0 }, { 0, 1, 3, 0 },
+                                              { 2, 3, 0, 0 }, { 0, 2, 3, 0 }, { 1, 2, 3, 0 }, { 0, 1, 2, 3 } };
+const int kLaneCount[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+
+// How far past its last seed FastLsd::seedsOfRow may write.
+constexpr size_t kCompactionSlack = 4;
 
 // Rows of the image whose gradients are computed by one task of the parallel loop.
 constexpr int kRowsPerStripe = 16;
@@ -77,8 +103,8 @@ void gradientNorms(const uchar* __restrict above, const uchar* __restrict below,
     defined = count;
 }
 
-// ... then, from |g| in norm, the unit level-line vector (-gy, gx) / |g| in fixed point ((0, 0) for
-// an undefined pixel) and the gradient norm |g| / 2.
+// ... then, from |g| in norm, the unit level-line vector (-gy, gx) / |g| in fixed point and the
+// gradient norm |g| / 2 ((0, 0) and 0 for an undefined pixel).
 void levelLines(const uchar* __restrict above, const uchar* __restrict below, int n, int threshold,
                 float* __restrict norm, short* __restrict level)
 {
@@ -86,11 +112,66 @@ void levelLines(const uchar* __restrict above, const uchar* __restrict below, in
     {
         int gx, gy;
         gradient2x2(above, below, x, gx, gy);
-        const float scale = (float)(gx * gx + gy * gy > threshold) * (kUnit / norm[x]);
+        const float defined = (float)(gx * gx + gy * gy > threshold);
+        const float scale = defined * (kUnit / norm[x]);
         level[2 * x] = (short)(-gy * scale);
         level[2 * x + 1] = (short)(gx * scale);
-        norm[x] *= 0.5f;
+        norm[x] *= 0.5f * defined;
     }
+}
+
+// The gradient pass of a row: the norm |g| / 2 (0 where undefined), the unit level-line vector
+// (0, 0 where undefined), the maximum of gx^2 + gy^2 and the count of defined pixels. Eight pixels
+// at a time in one pass with the same float operations as the two loops above (bit-identical),
+// which do the rest of the row.
+void gradientRow(const uchar* above, const uchar* below, int n, int threshold, float* norm, short* level,
+                 int& rowMax, int& defined)
+{
+    int x = 0, maxNorm2 = 0, count = 0;
+#if CV_SIMD128
+    const v_int32x4 limit = v_setall_s32(threshold), one = v_setall_s32(1);
+    const v_float32x4 unit = v_setall_f32(kUnit), half = v_setall_f32(0.5f);
+    v_int32x4 maxima = v_setzero_s32(), counts = v_setzero_s32();
+    for (; x + 8 <= n; x += 8)
+    {
+        const v_int16x8 a = v_reinterpret_as_s16(v_load_expand(above + x)), b = v_reinterpret_as_s16(v_load_expand(above + x + 1));
+        const v_int16x8 c = v_reinterpret_as_s16(v_load_expand(below + x)), d = v_reinterpret_as_s16(v_load_expand(below + x + 1));
+        const v_int16x8 da = d - a, bc = b - c, gx = da + bc, gy = da - bc;
+        v_int16x8 pairs[2];
+        v_zip(gx, gy, pairs[0], pairs[1]);
+        v_int32x4 gx32[2], gy32[2];
+        v_expand(gx, gx32[0], gx32[1]);
+        v_expand(gy, gy32[0], gy32[1]);
+        v_int32x4 ux[2], uy[2];
+        for (int h = 0; h < 2; h++)
+        {
+            const v_int32x4 n2 = v_dotprod(pairs[h], pairs[h]);
+            const v_int32x4 isDefined = n2 > limit;
+            maxima = v_max(maxima, n2);
+            counts -= isDefined;
+            const v_float32x4 root = v_sqrt(v_cvt_f32(n2 + ((n2 == v_setzero_s32()) & one)));
+            const v_float32x4 def = v_cvt_f32(isDefined & one);
+            const v_float32x4 scale = def * (unit / root);
+            ux[h] = v_trunc(v_cvt_f32(v_setzero_s32() - gy32[h]) * scale);
+            uy[h] = v_trunc(v_cvt_f32(gx32[h]) * scale);
+            v_store(norm + x + 4 * h, root * (half * def));
+        }
+        v_store_interleave(level + 2 * x, v_pack(ux[0], ux[1]), v_pack(uy[0], uy[1]));
+    }
+    maxNorm2 = v_reduce_max(maxima);
+    count = v_reduce_sum(counts);
+#endif
+    if (x < n)
+    {
+        int tailMax, tailDefined;
+        gradientNorms(above + x, below + x, n - x, threshold, norm + x, tailMax, tailDefined);
+        hal::sqrt32f(norm + x, norm + x, n - x);
+        levelLines(above + x, below + x, n - x, threshold, norm + x, level + 2 * x);
+        maxNorm2 = std::max(maxNorm2, tailMax);
+        count += tailDefined;
+    }
+    rowMax = maxNorm2;
+    defined = count;
 }
 
 // Whether a pixel's vector is not (0, 0): it has a defined gradient and is in no region yet.
@@ -104,15 +185,202 @@ inline double squaredDistance(double x1, double y1, double x2, double y2)
     return (x2 - x1) * (x2 - x1) + (y2 - y1) * (y2 - y1);
 }
 
+// The start of part k of [0, length) cut into `parts` parts of equal size (to one pixel).
+inline int partStart(int length, int parts, int k)
+{
+    return (int)((int64)length * k / parts);
+}
+
+// How many tiles of about tileHeight rows cut `rows` rows (one without tiles).
+inline int tilesAlong(int rows, int tileHeight)
+{
+    return tileHeight == 0 ? 1 : std::max(1, (rows + tileHeight / 2) / tileHeight);
+}
+
+// Pixel (x, y) of buffer index q (row stride `stride`, one border row and column), by a
+// multiplication: the rounding of q / stride is corrected, so that no integer division is needed.
+inline Point pixelAt(int q, int stride, double invStride)
+{
+    int y = (int)(q * invStride);
+    y += (y + 1) * stride <= q;
+    y -= y * stride > q;
+    return Point(q - y * stride - 1, y - 1);
+}
+
+// Bin of a gradient norm in the pseudo-ordering: floor(norm * (numBins - 1) / maxNorm).
+inline int binOfNorm(float norm, float binScale, int numBins)
+{
+    return std::min(numBins - 1, (int)(norm * binScale));
+}
+
+// The least float norm in a bin (bins grow with the norm).
+float lowestNormOfBin(int bin, float binScale, int numBins)
+{
+    float norm = (float)bin / binScale;
+    while (norm > 0 && binOfNorm(std::nextafter(norm, 0.f), binScale, numBins) >= bin)
+        norm = std::nextafter(norm, 0.f);
+    while (binOfNorm(norm, binScale, numBins) < bin)
+        norm = std::nextafter(norm, FLT_MAX);
+    return norm;
+}
+
+// log(n!) from a table grown on demand.
+double logFactorial(int n, std::vector<double>& table)
+{
+    if (table.empty())
+        table.push_back(0.0);
+    while ((int)table.size() <= n)
+        table.push_back(table.back() + std::log((double)table.size()));
+    return table[n];
+}
+
 } // namespace
+
+// A region grower: the seeds it grows from, the region being grown, the segments found, and the
+// regions a tile sets aside at its seams, in buffers that only grow. Each tile has one, the
+// joining of the regions across the seams another; they grow over the detector's shared buffers.
+class FastLsd::Regions
+{
+public:
+    //! Grows a region from each seed that is still free, in order; appends the segment of each
+    //! valid one to segments. With a tile, a region with a pixel in a row next to one of the
+    //! tile's seams is released instead (its pixels stay taken), to be joined across the seam.
+    void detect(FastLsd& lsd, Tile* tile);
+    //! Room for a region of up to `pixels` pixels, and for a list of that many seeds in regionIndex.
+    void reserve(size_t pixels);
+
+    std::vector<int> seeds;      //!< in the order they grow
+    std::vector<int> binStart;   //!< the counting sort's bins
+    //! The current region: the buffer indices of its pixels (regionSize of them; the seed first;
+    //! before the regions of a tile, its seeds in raster order), their vectors (which level no
+    //! longer holds), their coordinates (filled by regionToRect), and the sum of their vectors.
+    std::vector<int> regionIndex;
+    std::vector<Vec2s> regionVector;
+    std::vector<Vec4f> segments;
+    //! The released regions: region k has the pixels releasedIndex[releasedStart[k] ..
+    //! releasedStart[k + 1]), with their vectors, and the sum of them in releasedSum.
+    std::vector<int> releasedIndex, releasedStart;
+    std::vector<Vec2s> releasedVector;
+    std::vector<Point2f> releasedSum;
+    int regionSize = 0;
+    Point2f regionSum;
+    //! Whether regionIndex and regionVector hold any region that can grow (a tile's: all its
+    //! defined pixels); otherwise they grow with the region.
+    bool fitsAnyRegion = true;
+    //! Whether the pixels' vectors are kept in regionVector and releasedVector: only the
+    //! refinement grows a region again (4 bytes per defined pixel otherwise).
+    bool keepsVectors = true;
+    //! While a tile grows: the buffer indices from which a pixel is in the tile's first row, from
+    //! which below its last; the rows beyond belong to other tiles (no limit at the image's border).
+    int firstRow = 0, firstRowEnd = 0, lastRow = INT_MAX;
+
+    //! Validates the current region (regionIndex, regionVector, regionSize, regionSum), of at least
+    //! minRegionSize pixels, and appends its segment when it is valid.
+    void emitRegion(FastLsd& lsd);
+
+private:
+    void growRegion(FastLsd& lsd, int seed, float cosUnit);
+    template <bool acute, bool mayOutgrow, bool bounded> void growRegionFrom(FastLsd& lsd, int seed, float cosUnit);
+    bool releaseAtSeams(const FastLsd& lsd, Tile& tile);
+    void regionToRect(const FastLsd& lsd, double prec, double p, Rect& rect);
+    bool refineRegion(FastLsd& lsd, Rect& rect);
+    bool shrinkRegionRadius(FastLsd& lsd, Rect& rect, double density);
+    double improveRect(const FastLsd& lsd, Rect& rect);
+
+    std::vector<Point> regionPixel;
+    std::vector<double> logFactorials;  //!< log(n!) for n < size(), grown on demand
+};
+
+//! The rows [y0, y1) of gradient pixels, whose regions grow alone, and whether another tile is
+//! above and below (the seam between them); for each column, the released region (-1: none)
+//! with a pixel in the first row, and in the last.
+struct FastLsd::Tile
+{
+    int y0 = 0, y1 = 0;
+    bool seamAbove = false, seamBelow = false;
+    std::vector<int> releasedAbove, releasedBelow;
+    Regions regions;
+};
+
+inline int FastLsd::binOf(int pixel) const
+{
+    return binOfNorm(gradNorm[pixel], binScale, numBins);
+}
+
+inline int FastLsd::alignedNeighbours(int pixel) const
+{
+    // The neighbour nearest to the level-line direction u: a step along x where |u_x| > sin(22.5
+    // deg), along y where |u_y| is, and the one opposite.
+    const Vec2s u = level[pixel];
+    const int dx = (u[0] > kStep) - (u[0] < -kStep), dy = (u[1] > kStep) - (u[1] < -kStep);
+    const int offset = dy * stride + dx;
+    const Vec2s a = level[pixel + offset], b = level[pixel - offset];
+    return (isFree(a) & (u[0] * a[0] + u[1] * a[1] > alignedDot)) + (isFree(b) & (u[0] * b[0] + u[1] * b[1] > alignedDot));
+}
 
 FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
     : refine(p.refine), scale(p.scale), sigmaScale(p.sigmaScale), quant(p.quant),
       angleTolerance(p.angleTolerance), logEps(p.logEps), densityThreshold(p.densityThreshold),
-      numBins(p.numBins)
+      seedGradientRatio(p.seedGradientRatio), numBins(p.numBins), seedAlignedNeighbours(p.seedAlignedNeighbours),
+      tileHeight(p.tileHeight), acrossSeams(makePtr<Regions>())
 {
     // The parameters are in their ranges: those of the table of parameters.hpp, which every setter checks.
+    acrossSeams->fitsAnyRegion = false;
 }
+
+FastLsd::~FastLsd() = default;
+
+std::vector<cv::Rect> FastLsd::tileAreas() const
+{
+    std::vector<cv::Rect> areas;
+    for (const Tile& t : tiles)
+        areas.emplace_back(0, t.y0, width - 1, t.y1 - t.y0);
+    return areas;
+}
+
+// The gradient pass over a range of rows (a loop body rather than a lambda: std::function would
+// allocate for it on every frame).
+class FastLsd::GradientRows CV_FINAL : public ParallelLoopBody
+{
+public:
+    GradientRows(FastLsd& detector, const Mat& gray) : lsd(detector), image(gray) {}
+    void operator()(const Range& rows) const CV_OVERRIDE
+    {
+        const int n = lsd.width - 1;
+        for (int y = rows.start; y < rows.end; y++)
+        {
+            const uchar* above = image.ptr<uchar>(y);
+            const uchar* below = image.ptr<uchar>(y + 1);
+            const size_t row = (size_t)(y + 1) * lsd.stride + 1;
+            float* norm = &lsd.gradNorm[row];
+            gradientRow(above, below, n, lsd.threshold, norm, &lsd.level[row][0], lsd.rowMaxNorm2[y], lsd.rowDefined[y]);
+            lsd.level[row - 1] = lsd.level[row + n] = Vec2s(0, 0);
+        }
+    }
+
+private:
+    FastLsd& lsd;
+    const Mat& image;
+};
+
+// The regions of the tiles, a task per tile.
+class FastLsd::TileRegions CV_FINAL : public ParallelLoopBody
+{
+public:
+    explicit TileRegions(FastLsd& detector) : lsd(detector) {}
+    void operator()(const Range& range) const CV_OVERRIDE
+    {
+        for (int t = range.start; t < range.end; t++)
+        {
+            Tile& tile = lsd.tiles[t];
+            lsd.orderTile(tile);
+            tile.regions.detect(lsd, tile.seamAbove || tile.seamBelow ? &tile : nullptr);
+        }
+    }
+
+private:
+    FastLsd& lsd;
+};
 
 void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
 {
@@ -141,80 +409,46 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
                    image->cols, image->rows));
 
     analysed = *image;
+    width = image->cols;
+    height = image->rows;
+    stride = width + 1;
+    layTiles();
     computeGradient(*image);
-    orderPixels();
 
-    const double prec = CV_PI * angleTolerance / 180.0;
-    const double p = angleTolerance / 180.0;
+    tolerance = CV_PI * angleTolerance / 180.0;
+    probability = angleTolerance / 180.0;
     logNT = 5.0 * (std::log10((double)width) + std::log10((double)height)) / 2.0 + std::log10(11.0);
     // Fewer points than this cannot give a meaningful segment, whatever their alignment.
-    const size_t minRegionSize = (size_t)(-logNT / std::log10(p));
+    minRegionSize = (int)(-logNT / std::log10(probability));
     // Once per frame: most seeds grow no region, and a cosine per seed cost 4 % of the time.
-    const float cosUnit = alignmentLimit(prec);
+    cosUnit = alignmentLimit(tolerance);
+    alignedDot = (int)std::floor((double)cosUnit * kUnit);
 
-    const int seeds = (int)ordered.size();
-    for (int i = 0; i < seeds; i++)
+    parallel_for_(Range(0, (int)tiles.size()), TileRegions(*this), (double)tiles.size());
+    joinAcrossSeams();
+    for (const Tile& t : tiles)
+        segments.insert(segments.end(), t.regions.segments.begin(), t.regions.segments.end());
+    segments.insert(segments.end(), acrossSeams->segments.begin(), acrossSeams->segments.end());
+}
+
+void FastLsd::layTiles()
+{
+    // The last row of the image has no gradient.
+    const int rows = height - 1;
+    const int count = tilesAlong(rows, tileHeight);
+    tiles.resize(count);
+    for (int k = 0; k < count; k++)
     {
-        // Seeds jump across the image: fetch the neighbourhood of a coming one while this one grows.
-        if (i + kPrefetchDistance < seeds)
-        {
-            const int coming = ordered[i + kPrefetchDistance];
-            prefetch(&level[coming - stride]);
-            prefetch(&level[coming]);
-            prefetch(&level[coming + stride]);
-        }
-        const int seed = ordered[i];
-        if (!isFree(level[seed]))
-            continue;
-        growRegion(seed, cosUnit);
-        if ((size_t)regionSize < minRegionSize)
-            continue;
-        Rect rect;
-        regionToRect(prec, p, rect);
-        if (refine >= LSD_REFINE_STD && !refineRegion(rect))
-            continue;
-        if (refine >= LSD_REFINE_ADV && improveRect(rect) <= logEps)
-            continue;
-        // The 2x2 gradient of pixel (x, y) is that of the point (x + 0.5, y + 0.5).
-        Vec4f s((float)(rect.x1 + 0.5), (float)(rect.y1 + 0.5), (float)(rect.x2 + 0.5), (float)(rect.y2 + 0.5));
-        if (scale != 1.0)
-            s *= (float)(1.0 / scale);
-        segments.push_back(s);
+        Tile& t = tiles[k];
+        t.seamAbove = k > 0;
+        t.seamBelow = k + 1 < count;
+        t.y0 = partStart(rows, count, k);
+        t.y1 = partStart(rows, count, k + 1);
     }
 }
 
-// The gradient pass over a range of rows (a loop body rather than a lambda: std::function would
-// allocate for it on every frame).
-class FastLsd::GradientRows CV_FINAL : public ParallelLoopBody
-{
-public:
-    GradientRows(FastLsd& detector, const Mat& gray) : lsd(detector), image(gray) {}
-    void operator()(const Range& rows) const CV_OVERRIDE
-    {
-        const int n = lsd.width - 1;
-        for (int y = rows.start; y < rows.end; y++)
-        {
-            const uchar* above = image.ptr<uchar>(y);
-            const uchar* below = image.ptr<uchar>(y + 1);
-            const size_t row = (size_t)(y + 1) * lsd.stride + 1;
-            float* norm = &lsd.gradNorm[row];
-            gradientNorms(above, below, n, lsd.threshold, norm, lsd.rowMaxNorm2[y], lsd.rowDefined[y]);
-            hal::sqrt32f(norm, norm, n);
-            levelLines(above, below, n, lsd.threshold, norm, &lsd.level[row][0]);
-            lsd.level[row - 1] = lsd.level[row + n] = Vec2s(0, 0);
-        }
-    }
-
-private:
-    FastLsd& lsd;
-    const Mat& image;
-};
-
 void FastLsd::computeGradient(const Mat& image)
 {
-    width = image.cols;
-    height = image.rows;
-    stride = width + 1;
     const size_t total = (size_t)stride * (height + 1);
     // Norm threshold rho = quant / sin(tolerance); a pixel is defined when its norm |g| / 2 > rho,
     // i.e. gx^2 + gy^2 > 4 rho^2, compared exactly on integers.
@@ -228,72 +462,353 @@ void FastLsd::computeGradient(const Mat& image)
     std::fill(level.begin(), level.begin() + stride, Vec2s(0, 0));
     std::fill(level.end() - stride, level.end(), Vec2s(0, 0));
     gradNorm.resize(total);
-    rowMaxNorm2.assign(height, 0);
-    rowDefined.assign(height, 0);
+    rowMaxNorm2.assign(height - 1, 0);
+    rowDefined.assign(height - 1, 0);
 
     parallel_for_(Range(0, height - 1), GradientRows(*this, image), std::max(1.0, (height - 1) / (double)kRowsPerStripe));
 
-    definedCount = 0;
-    for (const int d : rowDefined)
-        definedCount += d;
+    const int maxNorm2 = *std::max_element(rowMaxNorm2.begin(), rowMaxNorm2.end());
+    const double maxNorm = 0.5 * std::sqrt((double)maxNorm2);
+    binScale = maxNorm2 > 0 ? (float)((numBins - 1) / maxNorm) : 0.f;
+
+    // The seeds are the pixels of the bins from that of seedGradientRatio * rho up: the first
+    // seeds of the LSD algorithm's order, so that the regions grown are exactly its first ones.
+    // seedNorm is the least norm in those bins (undefined pixels have a norm of 0).
+    const double seedLevel = seedGradientRatio * rho;
+    if (seedGradientRatio == 1.0 || maxNorm2 == 0)
+        seedNorm = FLT_MIN;
+    else if (seedLevel > maxNorm)
+        seedNorm = FLT_MAX;
+    else
+        seedNorm = std::max(lowestNormOfBin(binOfNorm((float)seedLevel, binScale, numBins), binScale, numBins), FLT_MIN);
 }
 
-void FastLsd::orderPixels()
+void FastLsd::orderTile(Tile& tile)
 {
-    const int maxNorm2 = *std::max_element(rowMaxNorm2.begin(), rowMaxNorm2.end());
-    // Bin of a pixel: floor(norm * (numBins - 1) / maxNorm).
-    const float binScale = maxNorm2 > 0 ? (float)((numBins - 1) / (0.5 * std::sqrt((double)maxNorm2))) : 0.f;
-    auto binOf = [&](int q) { return std::min(numBins - 1, (int)(gradNorm[q] * binScale)); };
-    // The defined pixels in raster order, in regionIndex until the regions need it. The compaction
-    // writes every pixel and moves on past the defined ones (no branch: defined and undefined
-    // pixels alternate at random in textured areas), so it writes one past the last.
-    std::vector<int>& defined = regionIndex;
-    defined.resize(definedCount + 1);
-    ordered.resize(definedCount);
-    regionVector.resize(definedCount);
-    binStart.assign((size_t)numBins + 1, 0);
-    int* next = defined.data();
-    for (int y = 0; y < height - 1; y++)
+    int defined = 0;
+    for (int y = tile.y0; y < tile.y1; y++)
+        defined += rowDefined[y];
+    Regions& r = tile.regions;
+    r.keepsVectors = refine >= LSD_REFINE_STD;
+    r.reserve(defined);
+    // The seeds in raster order, in regionIndex until the regions need it (all of them free: the
+    // tile's regions have not grown yet). Every defined pixel of a row next to a seam seeds: a
+    // segment that crosses it from a stronger part in the other tile has its part here grown and
+    // joined; the neighbours across the seam are another tile's, which grows at the same time.
+    int* next = r.regionIndex.data();
+    for (int y = tile.y0; y < tile.y1; y++)
     {
-        const int row = (y + 1) * stride + 1;
-        const Vec2s* u = &level[row];
-        for (int x = 0; x < width - 1; x++)
-        {
-            *next = row + x;
-            next += isFree(u[x]);
-        }
+        const bool nextToSeam = (y == tile.y0 && tile.seamAbove) || (y == tile.y1 - 1 && tile.seamBelow);
+        next = nextToSeam ? seedsOfRow(y, FLT_MIN, false, next) : seedsOfRow(y, seedNorm, seedAlignedNeighbours > 0, next);
     }
+    const int count = (int)(next - r.regionIndex.data());
+    r.seeds.resize(count);
     // Highest bin first; inside a bin, raster order (a stable counting sort).
-    int* counts = binStart.data();
-    for (int i = 0; i < definedCount; i++)
-        counts[numBins - 1 - binOf(defined[i])]++;
+    r.binStart.assign((size_t)numBins + 1, 0);
+    int* counts = r.binStart.data();
+    for (int i = 0; i < count; i++)
+        counts[numBins - 1 - binOf(r.regionIndex[i])]++;
     int position = 0;
     for (int b = 0; b <= numBins; b++)
     {
-        const int count = counts[b];
+        const int n = counts[b];
         counts[b] = position;
-        position += count;
+        position += n;
     }
-    for (int i = 0; i < definedCount; i++)
-        ordered[counts[numBins - 1 - binOf(defined[i])]++] = defined[i];
+    for (int i = 0; i < count; i++)
+        r.seeds[counts[numBins - 1 - binOf(r.regionIndex[i])]++] = r.regionIndex[i];
 }
 
-template <bool acute>
-void FastLsd::growRegionFrom(int seed, float cosUnit)
+int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
+{
+    // A compaction: every pixel is written and the end moves on past the seeds (no branch: seeds
+    // and other pixels alternate at random in textured areas), so it writes past the last, by up
+    // to kCompactionSlack.
+    const int row = (y + 1) * stride + 1, n = width - 1;
+    const float* norm = &gradNorm[row];
+    int x = 0;
+    if (!onEdges)
+    {
+        for (; x < n; x++)
+        {
+            *next = row + x;
+            next += norm[x] >= least;
+        }
+        return next;
+    }
+#if CV_SIMD128
+    // Four pixels at a time: their dot products with their 8 neighbours (interleaved 16-bit pairs:
+    // one v_dotprod per neighbour), of which the level line picks two, as alignedNeighbours does.
+    const short* u = &level[row][0];
+    const v_int32x4 zero = v_setzero_s32(), limit = v_setall_s32(alignedDot), step = v_setall_s32(kStep);
+    const v_int32x4 minusStep = v_setall_s32(-kStep), needed = v_setall_s32(seedAlignedNeighbours);
+    const v_float32x4 leastNorm = v_setall_f32(least);
+    for (; x + 4 <= n; x += 4)
+    {
+        const v_int16x8 centre = v_load(u + 2 * x);
+        // -1 where the neighbour at the offset is free and aligned, 0 elsewhere.
+        const auto aligned = [&](int offset) {
+            const v_int16x8 v = v_load(u + 2 * (x + offset));
+            return (v_dotprod(centre, v) > limit) & (v_reinterpret_as_s32(v) != zero);
+        };
+        const v_int32x4 both = v_reinterpret_as_s32(centre);
+        const v_int32x4 ux = v_shr<16>(v_shl<16>(both)), uy = v_shr<16>(both);
+        const v_int32x4 alongX = (ux > step) | (ux < minusStep), alongY = (uy > step) | (uy < minusStep);
+        const v_int32x4 horizontal = aligned(-1) + aligned(1), vertical = aligned(-stride) + aligned(stride);
+        const v_int32x4 falling = aligned(-stride - 1) + aligned(stride + 1), rising = aligned(-stride + 1) + aligned(stride - 1);
+        const v_int32x4 diagonal = v_select((ux ^ uy) >= zero, falling, rising);
+        const v_int32x4 minusCount = v_select(alongX & alongY, diagonal, v_select(alongX, horizontal, vertical));
+        // The seeds' indices packed to the front of four, from a table (writes up to 3 past them).
+        const int seeds = v_signmask(v_reinterpret_as_s32(v_load(norm + x) >= leastNorm) & ((zero - minusCount) >= needed));
+        v_store(next, v_setall_s32(row + x) + v_load(kPackedLanes[seeds]));
+        next += kLaneCount[seeds];
+    }
+#endif
+    for (; x < n; x++)
+    {
+        *next = row + x;
+        next += (norm[x] >= least) & (alignedNeighbours(row + x) >= seedAlignedNeighbours);
+    }
+    return next;
+}
+
+void FastLsd::joinAcrossSeams()
+{
+    Regions& joined = *acrossSeams;
+    joined.keepsVectors = refine >= LSD_REFINE_STD;
+    joined.segments.clear();
+    if (tiles.size() == 1)
+        return;
+    releasedFirst.resize(tiles.size() + 1);
+    releasedFirst[0] = 0;
+    for (size_t t = 0; t < tiles.size(); t++)
+        releasedFirst[t + 1] = releasedFirst[t] + (int)tiles[t].regions.releasedSum.size();
+    const int released = releasedFirst.back();
+
+    // Two released regions of tiles t and t + 1 are joined when pixels of theirs are neighbours
+    // across the seam between them (one column apart at most) and their directions agree within
+    // the angle tolerance, as a pixel joins a region.
+    joinedTo.resize(released);
+    for (int k = 0; k < released; k++)
+        joinedTo[k] = k;
+    const auto root = [&](int k) {
+        while (joinedTo[k] != k)
+            k = joinedTo[k] = joinedTo[joinedTo[k]];
+        return k;
+    };
+    const double cosTolerance = std::cos(tolerance);
+    const int columns = width - 1;
+    for (size_t t = 0; t + 1 < tiles.size(); t++)
+    {
+        const Tile &upper = tiles[t], &lower = tiles[t + 1];
+        for (int x = 0; x < columns; x++)
+        {
+            const int a = upper.releasedBelow[x];
+            if (a < 0)
+                continue;
+            const Point2f& sa = upper.regions.releasedSum[a];
+            for (int bx = std::max(0, x - 1); bx <= std::min(columns - 1, x + 1); bx++)
+            {
+                const int b = lower.releasedAbove[bx];
+                if (b < 0)
+                    continue;
+                const Point2f& sb = lower.regions.releasedSum[b];
+                if (sa.dot(sb) < cosTolerance * std::sqrt((double)sa.dot(sa) * sb.dot(sb)))
+                    continue;
+                const int ra = root(releasedFirst[t] + a), rb = root(releasedFirst[t + 1] + b);
+                joinedTo[std::max(ra, rb)] = std::min(ra, rb);
+            }
+        }
+    }
+
+    // The released regions of each joined region, in order; a region's root is its first.
+    for (int k = 0; k < released; k++)
+        joinedTo[k] = root(k);
+    groupStart.assign((size_t)released + 1, 0);
+    for (int k = 0; k < released; k++)
+        groupStart[joinedTo[k] + 1]++;
+    for (int k = 0; k < released; k++)
+        groupStart[k + 1] += groupStart[k];
+    groupFill.assign(groupStart.begin(), groupStart.end() - 1);
+    groupMembers.resize(released);
+    for (int k = 0; k < released; k++)
+        groupMembers[groupFill[joinedTo[k]]++] = k;
+
+    const auto tileOf = [&](int k) {
+        return (int)(std::upper_bound(releasedFirst.begin(), releasedFirst.end(), k) - releasedFirst.begin()) - 1;
+    };
+    // Released region k: its pixels, in the released buffers of its tile's regions.
+    const auto partOf = [&](int k, int& begin, int& end) -> const Regions& {
+        const int t = tileOf(k), local = k - releasedFirst[t];
+        const Regions& r = tiles[t].regions;
+        begin = r.releasedStart[local];
+        end = r.releasedStart[local + 1];
+        return r;
+    };
+    for (int g = 0; g < released; g++)
+    {
+        if (joinedTo[g] != g)
+            continue;
+        int size = 0, begin, end;
+        for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
+        {
+            partOf(groupMembers[m], begin, end);
+            size += end - begin;
+        }
+        if (size < minRegionSize)
+            continue;
+        // The joined region grows from the strongest seed of its parts (highest bin, then raster
+        // order), as it would have without the seams: that part's pixels come first.
+        int first = g, firstSeed = -1;
+        for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
+        {
+            const Regions& r = partOf(groupMembers[m], begin, end);
+            const int seed = r.releasedIndex[begin];
+            if (firstSeed < 0 || binOf(seed) > binOf(firstSeed) || (binOf(seed) == binOf(firstSeed) && seed < firstSeed))
+            {
+                first = groupMembers[m];
+                firstSeed = seed;
+            }
+        }
+        joined.reserve(size);
+        joined.regionSize = 0;
+        joined.regionSum = Point2f(0, 0);
+        const auto append = [&](int k) {
+            const Regions& r = partOf(k, begin, end);
+            std::copy(r.releasedIndex.begin() + begin, r.releasedIndex.begin() + end, joined.regionIndex.begin() + joined.regionSize);
+            if (joined.keepsVectors)
+                std::copy(r.releasedVector.begin() + begin, r.releasedVector.begin() + end, joined.regionVector.begin() + joined.regionSize);
+            joined.regionSize += end - begin;
+            joined.regionSum += r.releasedSum[k - releasedFirst[tileOf(k)]];
+        };
+        append(first);
+        for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
+            if (groupMembers[m] != first)
+                append(groupMembers[m]);
+        joined.emitRegion(*this);
+    }
+}
+
+void FastLsd::Regions::reserve(size_t pixels)
+{
+    // regionIndex holds more: the compaction of the seeds writes past the last.
+    if (regionIndex.size() < pixels + kCompactionSlack)
+        regionIndex.resize(pixels + kCompactionSlack);
+    if (keepsVectors && regionVector.size() < pixels)
+        regionVector.resize(pixels);
+}
+
+void FastLsd::Regions::detect(FastLsd& lsd, Tile* tile)
+{
+    segments.clear();
+    releasedIndex.clear();
+    releasedVector.clear();
+    releasedStart.assign(1, 0);
+    releasedSum.clear();
+    firstRow = 0;
+    firstRowEnd = 0;
+    lastRow = INT_MAX;
+    if (tile)
+    {
+        tile->releasedAbove.assign(tile->seamAbove ? lsd.width - 1 : 0, -1);
+        tile->releasedBelow.assign(tile->seamBelow ? lsd.width - 1 : 0, -1);
+        if (tile->seamAbove)
+        {
+            firstRow = (tile->y0 + 1) * lsd.stride;
+            firstRowEnd = firstRow + lsd.stride;
+        }
+        if (tile->seamBelow)
+            lastRow = tile->y1 * lsd.stride;
+    }
+    const Vec2s* level = lsd.level.data();
+    const int count = (int)seeds.size(), stride = lsd.stride;
+    for (int i = 0; i < count; i++)
+    {
+        // Seeds jump across the image: fetch the neighbourhood of a coming one while this one grows.
+        if (i + kPrefetchDistance < count)
+        {
+            const int coming = seeds[i + kPrefetchDistance];
+            prefetch(&level[coming - stride]);
+            prefetch(&level[coming]);
+            prefetch(&level[coming + stride]);
+        }
+        const int seed = seeds[i];
+        if (!isFree(level[seed]))
+            continue;
+        growRegion(lsd, seed, lsd.cosUnit);
+        // A region of n pixels lies within n - 1 rows of its seed: most are far from the seams.
+        const int64 reach = (int64)(regionSize - 1) * (stride + 1);
+        if (tile && (seed - reach < firstRowEnd || seed + reach >= lastRow) && releaseAtSeams(lsd, *tile))
+            continue;
+        if (regionSize >= lsd.minRegionSize)
+            emitRegion(lsd);
+    }
+}
+
+void FastLsd::Regions::emitRegion(FastLsd& lsd)
+{
+    Rect rect;
+    regionToRect(lsd, lsd.tolerance, lsd.probability, rect);
+    if (lsd.refine >= LSD_REFINE_STD && !refineRegion(lsd, rect))
+        return;
+    if (lsd.refine >= LSD_REFINE_ADV && improveRect(lsd, rect) <= lsd.logEps)
+        return;
+    // The 2x2 gradient of pixel (x, y) is that of the point (x + 0.5, y + 0.5).
+    Vec4f s((float)(rect.x1 + 0.5), (float)(rect.y1 + 0.5), (float)(rect.x2 + 0.5), (float)(rect.y2 + 0.5));
+    if (lsd.scale != 1.0)
+        s *= (float)(1.0 / lsd.scale);
+    segments.push_back(s);
+}
+
+bool FastLsd::Regions::releaseAtSeams(const FastLsd& lsd, Tile& tile)
+{
+    int lowest = regionIndex[0], highest = regionIndex[0];
+    for (int i = 1; i < regionSize; i++)
+    {
+        lowest = std::min(lowest, regionIndex[i]);
+        highest = std::max(highest, regionIndex[i]);
+    }
+    const bool above = lowest < firstRowEnd, below = highest >= lastRow;
+    if (!above && !below)
+        return false;
+    const int region = (int)releasedSum.size();
+    for (int i = 0; i < regionSize; i++)
+    {
+        const int q = regionIndex[i];
+        if (above && q < firstRowEnd)
+            tile.releasedAbove[q - firstRow - 1] = region;
+        if (below && q >= lastRow)
+            tile.releasedBelow[q - lastRow - 1] = region;
+    }
+    releasedIndex.insert(releasedIndex.end(), regionIndex.begin(), regionIndex.begin() + regionSize);
+    if (keepsVectors)
+        releasedVector.insert(releasedVector.end(), regionVector.begin(), regionVector.begin() + regionSize);
+    releasedStart.push_back((int)releasedIndex.size());
+    releasedSum.push_back(regionSum);
+    return true;
+}
+
+template <bool acute, bool mayOutgrow, bool bounded>
+void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
 {
     // A pixel joins when its unit level-line vector u is within the tolerance of the region's
     // direction, the sum S of its pixels' vectors: u.S >= cos(tolerance) |u| |S| (= limit). A pixel
-    // that joins gives its vector to regionVector and keeps (0, 0). With an acute tolerance the test
+    // that joins keeps (0, 0), its vector going to regionVector when kept. With an acute tolerance the test
     // is strict, so that a (0, 0) vector fails it without a test of its own; equality has no
     // weight on real data.
-    Vec2s* u = level.data();
+    if (mayOutgrow && regionIndex.size() < 9 + kCompactionSlack)
+        reserve(9);
+    Vec2s* u = lsd.level.data();
     int* region = regionIndex.data();
     Vec2s* kept = regionVector.data();
+    const bool keeping = keepsVectors;
+    int capacity = (int)(regionIndex.size() - kCompactionSlack);
 
     float sx = u[seed][0], sy = u[seed][1];
     float limit = cosUnit * std::sqrt(sx * sx + sy * sy);
     region[0] = seed;
-    kept[0] = u[seed];
+    if (keeping)
+        kept[0] = u[seed];
     u[seed] = Vec2s(0, 0);
     int size = 1;
     auto visit = [&](int q) {
@@ -303,8 +818,9 @@ void FastLsd::growRegionFrom(int seed, float cosUnit)
         const bool joins = acute ? d > limit : (isFree(v) & (d >= limit));
         if (!joins)
             return;
-        region[size] = q;
-        kept[size++] = v;
+        if (keeping)
+            kept[size] = v;
+        region[size++] = q;
         u[q] = Vec2s(0, 0);
         sx += v[0];
         sy += v[1];
@@ -312,18 +828,32 @@ void FastLsd::growRegionFrom(int seed, float cosUnit)
     };
     // The 8 neighbours row by row, as the published algorithm visits them: the order decides which
     // pixels join, since the region's direction changes with every pixel.
-    const int s = stride;
+    const int s = lsd.stride;
     for (int i = 0; i < size; i++)
     {
+        if (mayOutgrow && size + 8 > capacity)
+        {
+            reserve(2 * (size_t)capacity + 8);
+            region = regionIndex.data();
+            kept = regionVector.data();
+            capacity = (int)(regionIndex.size() - kCompactionSlack);
+        }
         const int c = region[i];
-        visit(c - s - 1);
-        visit(c - s);
-        visit(c - s + 1);
+        // In a tile, the neighbours in the rows of the tiles above and below are not its own.
+        if (!bounded || c >= firstRowEnd)
+        {
+            visit(c - s - 1);
+            visit(c - s);
+            visit(c - s + 1);
+        }
         visit(c - 1);
         visit(c + 1);
-        visit(c + s - 1);
-        visit(c + s);
-        visit(c + s + 1);
+        if (!bounded || c < lastRow)
+        {
+            visit(c + s - 1);
+            visit(c + s);
+            visit(c + s + 1);
+        }
     }
     regionSize = size;
     regionSum = Point2f(sx, sy);
@@ -334,21 +864,33 @@ float FastLsd::alignmentLimit(double tolerance)
     return (float)std::cos(tolerance) * kUnit;
 }
 
-void FastLsd::growRegion(int seed, float cosUnit)
+void FastLsd::Regions::growRegion(FastLsd& lsd, int seed, float cosUnit)
 {
+    const bool bounded = firstRowEnd > 0 || lastRow < INT_MAX;
     if (cosUnit > 0)
-        growRegionFrom<true>(seed, cosUnit);
+    {
+        if (!fitsAnyRegion)
+            growRegionFrom<true, true, false>(lsd, seed, cosUnit);
+        else if (bounded)
+            growRegionFrom<true, false, true>(lsd, seed, cosUnit);
+        else
+            growRegionFrom<true, false, false>(lsd, seed, cosUnit);
+    }
+    else if (!fitsAnyRegion)
+        growRegionFrom<false, true, false>(lsd, seed, cosUnit);
+    else if (bounded)
+        growRegionFrom<false, false, true>(lsd, seed, cosUnit);
     else
-        growRegionFrom<false>(seed, cosUnit);
+        growRegionFrom<false, false, false>(lsd, seed, cosUnit);
 }
 
-void FastLsd::regionToRect(double prec, double p, Rect& rect)
+void FastLsd::Regions::regionToRect(const FastLsd& lsd, double prec, double p, Rect& rect)
 {
     // Centre of mass and inertia of the region, each pixel weighted by its gradient norm, from
-    // moments about the seed in one pass. Coordinates from buffer indices by a multiplication: the
-    // rounding of q / stride is corrected, so that no integer division is needed.
+    // moments about the seed in one pass.
     if ((int)regionPixel.size() < regionSize)
         regionPixel.resize(regionSize);  // grows to the largest region, once
+    const int stride = lsd.stride;
     const double invStride = 1.0 / stride;
     const int seedY = (int)(regionIndex[0] * invStride);
     const Point origin(regionIndex[0] - seedY * stride - 1, seedY - 1);
@@ -356,12 +898,9 @@ void FastLsd::regionToRect(double prec, double p, Rect& rect)
     for (int i = 0; i < regionSize; i++)
     {
         const int q = regionIndex[i];
-        int y = (int)(q * invStride);
-        y += (y + 1) * stride <= q;
-        y -= y * stride > q;
-        const Point at(q - y * stride - 1, y - 1);
+        const Point at = pixelAt(q, stride, invStride);
         regionPixel[i] = at;
-        const double w = gradNorm[q];
+        const double w = lsd.gradNorm[q];
         const double dx = at.x - origin.x, dy = at.y - origin.y;
         sum += w;
         sx += w * dx;
@@ -407,10 +946,10 @@ void FastLsd::regionToRect(double prec, double p, Rect& rect)
     rect.p = p;
 }
 
-bool FastLsd::refineRegion(Rect& rect)
+bool FastLsd::Regions::refineRegion(FastLsd& lsd, Rect& rect)
 {
     double density = regionSize / (std::sqrt(squaredDistance(rect.x1, rect.y1, rect.x2, rect.y2)) * rect.width);
-    if (density >= densityThreshold)
+    if (density >= lsd.densityThreshold)
         return true;
 
     // Too sparse: grow the region again from its seed with the tolerance narrowed to twice the
@@ -422,7 +961,7 @@ bool FastLsd::refineRegion(Rect& rect)
     int n = 0;
     for (int i = 0; i < regionSize; i++)
     {
-        level[regionIndex[i]] = regionVector[i];
+        lsd.level[regionIndex[i]] = regionVector[i];
         if (squaredDistance(centre.x, centre.y, regionPixel[i].x, regionPixel[i].y) < rect.width * rect.width)
         {
             const Point2d dir(regionVector[i][0], regionVector[i][1]);
@@ -435,27 +974,27 @@ bool FastLsd::refineRegion(Rect& rect)
     const double mean = sum / n;
     const double tau = 2.0 * std::sqrt(std::max(0.0, (sumSq - 2.0 * mean * sum) / n + mean * mean));
 
-    growRegion(seed, alignmentLimit(tau));
+    growRegion(lsd, seed, alignmentLimit(tau));
     if (regionSize < 2)
         return false;
-    regionToRect(rect.prec, rect.p, rect);
+    regionToRect(lsd, rect.prec, rect.p, rect);
     density = regionSize / (std::sqrt(squaredDistance(rect.x1, rect.y1, rect.x2, rect.y2)) * rect.width);
-    return density >= densityThreshold || shrinkRegionRadius(rect, density);
+    return density >= lsd.densityThreshold || shrinkRegionRadius(lsd, rect, density);
 }
 
-bool FastLsd::shrinkRegionRadius(Rect& rect, double density)
+bool FastLsd::Regions::shrinkRegionRadius(FastLsd& lsd, Rect& rect, double density)
 {
     const Point centre = regionPixel[0];
     double radius2 = std::max(squaredDistance(centre.x, centre.y, rect.x1, rect.y1),
                               squaredDistance(centre.x, centre.y, rect.x2, rect.y2));
-    while (density < densityThreshold)
+    while (density < lsd.densityThreshold)
     {
         radius2 *= 0.75 * 0.75;
         for (int i = 0; i < regionSize;)
         {
             if (squaredDistance(centre.x, centre.y, regionPixel[i].x, regionPixel[i].y) > radius2)
             {
-                level[regionIndex[i]] = regionVector[i];
+                lsd.level[regionIndex[i]] = regionVector[i];
                 regionSize--;
                 regionIndex[i] = regionIndex[regionSize];
                 regionVector[i] = regionVector[regionSize];
@@ -466,13 +1005,13 @@ bool FastLsd::shrinkRegionRadius(Rect& rect, double density)
         }
         if (regionSize < 2)
             return false;
-        regionToRect(rect.prec, rect.p, rect);
+        regionToRect(lsd, rect.prec, rect.p, rect);
         density = regionSize / (std::sqrt(squaredDistance(rect.x1, rect.y1, rect.x2, rect.y2)) * rect.width);
     }
     return true;
 }
 
-double FastLsd::rectLogNfa(const Rect& rect) const
+double FastLsd::rectLogNfa(const Rect& rect, std::vector<double>& logFactorials) const
 {
     // The pixels whose centres lie in the rectangle, row by row: each row meets the rectangle's
     // four sides in an interval.
@@ -528,20 +1067,20 @@ double FastLsd::rectLogNfa(const Rect& rect) const
             aligned += n2 > threshold && -gy * rect.dx + gx * rect.dy >= cosTol * std::sqrt((double)n2);
         }
     }
-    return logNfa(total, aligned, rect.p);
+    return logNfa(total, aligned, rect.p, logFactorials);
 }
 
-double FastLsd::improveRect(Rect& rect) const
+double FastLsd::Regions::improveRect(const FastLsd& lsd, Rect& rect)
 {
     // The published variations of the rectangle, each kept when it lowers the NFA: finer
     // precision, thinner, one side moved in, the other side moved in, finer precision again.
     constexpr double delta = 0.5, halfDelta = delta / 2.0;
-    double best = rectLogNfa(rect);
-    if (best > logEps)
+    double best = lsd.rectLogNfa(rect, logFactorials);
+    if (best > lsd.logEps)
         return best;
 
     auto tryVariation = [&](const Rect& candidate) {
-        const double value = rectLogNfa(candidate);
+        const double value = lsd.rectLogNfa(candidate, logFactorials);
         if (value > best)
         {
             best = value;
@@ -559,7 +1098,7 @@ double FastLsd::improveRect(Rect& rect) const
                 step(r);
                 tryVariation(r);
             }
-        return best > logEps;
+        return best > lsd.logEps;
     };
     const auto finerPrecision = [](Rect& r) {
         r.p /= 2;
@@ -584,16 +1123,7 @@ double FastLsd::improveRect(Rect& rect) const
     return best;
 }
 
-double FastLsd::logFactorial(int n) const
-{
-    if (logFactorials.empty())
-        logFactorials.push_back(0.0);
-    while ((int)logFactorials.size() <= n)
-        logFactorials.push_back(logFactorials.back() + std::log((double)logFactorials.size()));
-    return logFactorials[n];
-}
-
-double FastLsd::logNfa(int n, int k, double p) const
+double FastLsd::logNfa(int n, int k, double p, std::vector<double>& logFactorials) const
 {
     // -log10(NFA) with NFA = NT * sum_{i >= k} C(n, i) p^i (1 - p)^(n - i), the binomial tail summed
     // from its first term until the remaining terms cannot change it by 10 %.
@@ -601,8 +1131,8 @@ double FastLsd::logNfa(int n, int k, double p) const
         return -logNT;
     if (n == k)
         return -logNT - n * std::log10(p);
-    const double firstLog = logFactorial(n) - logFactorial(k) - logFactorial(n - k) + k * std::log(p) +
-                            (n - k) * std::log(1.0 - p);
+    const double firstLog = logFactorial(n, logFactorials) - logFactorial(k, logFactorials) -
+                            logFactorial(n - k, logFactorials) + k * std::log(p) + (n - k) * std::log(1.0 - p);
     double term = std::exp(firstLog);
     if (term == 0.0)
         return k > n * p ? -firstLog / std::log(10.0) - logNT : -logNT;

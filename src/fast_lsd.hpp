@@ -17,15 +17,21 @@ namespace ximgproc {
 namespace lsda {
 
 //! The LSD algorithm with OpenCV's LineSegmentDetector parameters and output convention (segments
-//! (x1, y1, x2, y2), pixel centres at integer coordinates, brighter side on the left). Every buffer
-//! is kept by the object and reused, so that a sequence of frames of one size allocates nothing
-//! once warm. Not safe to call from two threads at once.
-class FastLsd
+//! (x1, y1, x2, y2), pixel centres at integer coordinates, brighter side on the left), and options
+//! options of its own (LSDParams::seedGradientRatio, LSDParams::seedAlignedNeighbours,
+//! LSDParams::tileHeight). Every buffer is kept
+//! by the object and reused, so that a sequence of frames of one size allocates nothing once
+//! warm. Not safe to call from two threads at once; it runs its own work in cv::parallel_for_.
+class CV_EXPORTS FastLsd
 {
 public:
     explicit FastLsd(const LSDAdvance::LSDParams& params);
+    ~FastLsd();
     //! Segments of a CV_8UC1 image.
     void detect(const Mat& gray, std::vector<Vec4f>& segments);
+    //! The tiles of the last frame: the gradient pixels (at the analysis scale) whose regions
+    //! each grew alone.
+    std::vector<cv::Rect> tileAreas() const;
 
 private:
     //! A rectangle approximating a region (IPOL's "rect"): the segment (x1, y1)-(x2, y2) with its
@@ -36,25 +42,30 @@ private:
         double x1, y1, x2, y2, width, x, y, dx, dy, prec, p;
     };
 
+    class Regions;
+    struct Tile;
     class GradientRows;
+    class TileRegions;
+    void layTiles();
     void computeGradient(const Mat& image);
-    void orderPixels();
-    //! cos(tolerance) in the scale of the level-line vectors: growRegion's argument.
+    void orderTile(Tile& tile);
+    void joinAcrossSeams();
+    //! Bin of a pixel in the pseudo-ordering.
+    int binOf(int pixel) const;
+    //! How many of the two 8-neighbours of a pixel along its level line are aligned with it.
+    int alignedNeighbours(int pixel) const;
+    //! Writes from `next` on the pixels of row y whose norm reaches least and, when onEdges, with
+    //! seedAlignedNeighbours aligned neighbours; returns the end.
+    int* seedsOfRow(int y, float least, bool onEdges, int* next) const;
+    //! cos(tolerance) in the scale of the level-line vectors: Regions::growRegion's argument.
     static float alignmentLimit(double tolerance);
-    void growRegion(int seed, float cosUnit);
-    template <bool acute> void growRegionFrom(int seed, float cosUnit);
-    void regionToRect(double prec, double p, Rect& rect);
-    bool refineRegion(Rect& rect);
-    bool shrinkRegionRadius(Rect& rect, double density);
-    double rectLogNfa(const Rect& rect) const;
-    double improveRect(Rect& rect) const;
-    double logNfa(int n, int k, double p) const;
-    double logFactorial(int n) const;
+    double rectLogNfa(const Rect& rect, std::vector<double>& logFactorials) const;
+    double logNfa(int n, int k, double p, std::vector<double>& logFactorials) const;
 
-    // Parameters (LSD's), resolved to what the loops use.
+    // Parameters (LSD's and ours), resolved to what the loops use.
     int refine;
-    double scale, sigmaScale, quant, angleTolerance, logEps, densityThreshold;
-    int numBins;
+    double scale, sigmaScale, quant, angleTolerance, logEps, densityThreshold, seedGradientRatio;
+    int numBins, seedAlignedNeighbours, tileHeight;
 
     // Per-frame state, sized for the largest frame seen (row stride = width + 1; one border row
     // and column of "undefined" pixels above and left, so that the 8 neighbours of any pixel with
@@ -62,25 +73,28 @@ private:
     Mat blurred, scaled, analysed;  //!< the image smoothed, at the analysis scale; a header of the one analysed
     int width = 0, height = 0, stride = 0;
     int threshold = 0;              //!< a pixel's gradient is defined when gx^2 + gy^2 > threshold
-    //! Unit level-line vector (-gy, gx) / |g| of each free pixel, times kUnit; (0, 0) for a pixel
-    //! without a defined gradient or already in a region.
-    std::vector<Vec2s> level;
-    std::vector<float> gradNorm;    //!< gradient norm |g| / 2 per pixel
-    std::vector<int> rowMaxNorm2, rowDefined;
-    std::vector<int> binStart;
-    std::vector<int> ordered;      //!< defined pixels, highest bin first
-    int definedCount = 0;
+    float seedNorm = 0;             //!< gradient norm |g| / 2 from which a pixel seeds a region
+    float binScale = 0;             //!< bin of the pseudo-ordering = |g| / 2 * binScale
     double logNT = 0;
+    double tolerance = 0, probability = 0;  //!< the angle tolerance in radians, and as a probability
+    float cosUnit = 0;
+    int alignedDot = 0;             //!< two unit vectors are aligned when their dot product exceeds it
+    int minRegionSize = 0;
+    //! Unit level-line vector (-gy, gx) / |g| of each free pixel, times kUnit; (0, 0) for a pixel
+    //! without a defined gradient, already in a region, or on a seam while the tiles grow.
+    std::vector<Vec2s> level;
+    std::vector<float> gradNorm;    //!< gradient norm |g| / 2 per pixel, 0 for an undefined one
+    //! Per row of the image: the largest gx^2 + gy^2, the defined pixels.
+    std::vector<int> rowMaxNorm2, rowDefined;
 
-    // The current region: the buffer indices of its pixels (regionSize of them; the seed first;
-    // before the regions, the defined pixels in raster order), their vectors (which level no
-    // longer holds), their coordinates (filled by regionToRect), and the sum of their vectors.
-    std::vector<int> regionIndex;
-    std::vector<Vec2s> regionVector;
-    std::vector<Point> regionPixel;
-    int regionSize = 0;
-    Point2f regionSum;
-    mutable std::vector<double> logFactorials;  //!< log(n!) for n < size(), grown on demand
+    // The tiles, top to bottom. The regions of a tile that reach a seam (the line between two
+    // tiles) are set aside (released); after the tiles, those that are neighbours across a seam
+    // with the same direction are joined into one region.
+    std::vector<Tile> tiles;
+    std::vector<int> releasedFirst;         //!< index in the frame of each tile's first released region
+    std::vector<int> joinedTo;              //!< union-find links between the released regions
+    std::vector<int> groupStart, groupFill, groupMembers;  //!< the released regions of each joined region
+    Ptr<Regions> acrossSeams;               //!< validates the joined regions
 };
 
 }}} // namespace cv::ximgproc::lsda

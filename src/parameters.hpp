@@ -46,7 +46,7 @@
     X(double, mergeThreshold, MergeThreshold, 0.6, Range::real(0, CLOSED, 1, CLOSED), nullptr)                    \
     X(double, maxPerpendicularOffset, MaxPerpendicularOffset, 1.5, Range::real(0, CLOSED, 100, CLOSED, " px"), nullptr)
 
-// LSDAdvance::LSDParams: X(type, field, default, range, key in files of version 4.6.0)
+// LSDAdvance::LSDParams: X(type, field, default, range, key in files of version 4.6.0 or nullptr)
 #define LSDA_LSD_PARAMS(X)                                                                                         \
     X(int, refine, LSD_REFINE_NONE, Range::enumOf(kLsdRefinements), "lsdRefine")                                   \
     X(double, scale, 1.0, Range::real(0, OPEN, 1, CLOSED), "lsdScale")                                             \
@@ -55,7 +55,10 @@
     X(double, angleTolerance, 22.5, Range::real(0, OPEN, 180, OPEN, " deg"), "lsdAngleTolerance")                  \
     X(double, logEps, 0.0, Range::real(-1000, CLOSED, 1000, CLOSED), "lsdLogEps")                                  \
     X(double, densityThreshold, 0.7, Range::real(0, CLOSED, 1, OPEN), "lsdDensityThreshold")                       \
-    X(int, numBins, 1024, Range::real(1, CLOSED, 65536, CLOSED), "lsdNumBins")
+    X(int, numBins, 1024, Range::real(1, CLOSED, 65536, CLOSED), "lsdNumBins")                                     \
+    X(double, seedGradientRatio, 2.5, Range::real(1, CLOSED, 100, CLOSED), nullptr)                                 \
+    X(int, seedAlignedNeighbours, 2, Range::real(0, CLOSED, 2, CLOSED), nullptr)                                   \
+    X(int, tileHeight, 64, Range::real(16, CLOSED, 100000, CLOSED, " px").orValue(0, "no tiles"), nullptr)
 
 // LSDAdvance::FLDParams: X(type, field, default, range, key in files of version 4.6.0)
 #define LSDA_FLD_PARAMS(X)                                                                                         \

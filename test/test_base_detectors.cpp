@@ -73,6 +73,13 @@ std::vector<Vec4f> piecesAlong(const std::vector<Vec4f>& lines, const Vec4f& sid
     return pieces;
 }
 
+// The LSDParams fields documented "BASE_FAST_LSD only".
+bool onlyForFastLsd(const ParameterAccess& p)
+{
+    return p.name == "LSDParams::seedGradientRatio" || p.name == "LSDParams::seedAlignedNeighbours" ||
+           p.name == "LSDParams::tileHeight";
+}
+
 Ptr<LSDAdvance> onBase(int base, bool stages)
 {
     Ptr<LSDAdvance> detector = createLSDAdvanceWith(stages ? LSDAdvance::LENGTH_FILTER_ADAPTIVE : LSDAdvance::LENGTH_FILTER_NONE);
@@ -202,6 +209,9 @@ TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
         { "LSDParams::logEps", 3.0, "LSDParams::refine", LSD_REFINE_ADV },
         { "LSDParams::densityThreshold", 0.95, "LSDParams::refine", LSD_REFINE_STD },
         { "LSDParams::numBins", 4, nullptr, 0 },
+        { "LSDParams::seedGradientRatio", 5.0, nullptr, 0 },
+        { "LSDParams::seedAlignedNeighbours", 0, nullptr, 0 },
+        { "LSDParams::tileHeight", 16, nullptr, 0 },
         { "FLDParams::lengthThreshold", 30, nullptr, 0 },
         { "FLDParams::distanceThreshold", 3.0, nullptr, 0 },
         { "FLDParams::cannyThreshold1", 150, nullptr, 0 },
@@ -222,7 +232,7 @@ TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
         { "EdgeDrawing::Params::LineFitErrorThreshold", 2.5, nullptr, 0 },
         { "EdgeDrawing::Params::MaxErrorThreshold", 4.0, nullptr, 0 },
     };
-    expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base >= 0; },
+    expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base >= 0 && !onlyForFastLsd(p); },
                                         [](const ParameterAccess& p) { return onBase(p.base, false); });
     // LSDParams serve both LSD bases.
     expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base == LSDAdvance::BASE_LSD; },
@@ -231,6 +241,20 @@ TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
 
 TEST(LSDAdvance_BaseDetectors, base_parameters_of_another_base_are_unused)
 {
+    // The LSDParams of the module's own LSD only (the seeds, the tiles) leave OpenCV's LSD as it is.
+    for (const ParameterAccess& p : everyParameter())
+        if (onlyForFastLsd(p))
+        {
+            SCOPED_TRACE(p.name);
+            const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+            std::vector<Vec4f> expected, lines;
+            onBase(LSDAdvance::BASE_LSD, true)->detect(img, expected);
+            Ptr<LSDAdvance> detector = onBase(LSDAdvance::BASE_LSD, true);
+            p.set(*detector, p.range.hi);
+            detector->detect(img, lines);
+            EXPECT_EQ(expected, lines);
+        }
+
     const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
     ASSERT_FALSE(img.empty());
     std::vector<Vec4f> expected, lines;

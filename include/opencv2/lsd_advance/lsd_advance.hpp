@@ -134,8 +134,9 @@ public:
         BASE_LSD = 0,     //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams
         BASE_FLD = 1,     //!< cv::ximgproc::FastLineDetector with FLDParams
         BASE_EDLINES = 2, //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
-        /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: it
-        gives OpenCV's LineSegmentDetector's segments (doc/performance.md). The default. */
+        /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: with
+        LSDParams::seedGradientRatio 1, LSDParams::seedAlignedNeighbours 0 and LSDParams::tileHeight 0
+        it gives OpenCV's LineSegmentDetector's segments (doc/performance.md). The default. */
         BASE_FAST_LSD = 3
     };
 
@@ -174,7 +175,8 @@ public:
     };
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
-    LineSegmentDetector) and BASE_FAST_LSD, with the meaning of cv::createLineSegmentDetector's arguments. */
+    LineSegmentDetector) and BASE_FAST_LSD, with the meaning of cv::createLineSegmentDetector's arguments,
+    and three of BASE_FAST_LSD's own (seedGradientRatio, seedAlignedNeighbours, tileHeight). */
     struct CV_EXPORTS_W_SIMPLE LSDParams
     {
         CV_WRAP LSDParams(); //!< the defaults (OpenCV's LSD uses LSD_REFINE_STD at scale 0.8)
@@ -186,6 +188,9 @@ public:
         CV_PROP_RW double logEps;           //!< detection threshold -log10(NFA) with LSD_REFINE_ADV, in [-1000, 1000]. Default 0.
         CV_PROP_RW double densityThreshold; //!< least share of aligned points in a rectangle, in [0, 1). Default 0.7.
         CV_PROP_RW int numBins;             //!< bins of the gradient pseudo-ordering, in [1, 65536]. Default 1024.
+        CV_PROP_RW double seedGradientRatio; //!< BASE_FAST_LSD only: regions are seeded only at pixels whose gradient norm is at least this times LSD's threshold quant / sin(angleTolerance), and weaker ones only join them, in [1, 100]; 1 seeds everywhere, as the LSD algorithm. Default 2.5.
+        CV_PROP_RW int seedAlignedNeighbours; //!< BASE_FAST_LSD only: regions are seeded only at pixels with at least this many of their two 8-neighbours along their level line aligned with them (an edge, not texture), in [0, 2]; 0 as the LSD algorithm. Default 2.
+        CV_PROP_RW int tileHeight;          //!< BASE_FAST_LSD only: regions grow in parallel in horizontal tiles of about this many rows at the analysis scale, laid out from the image size alone, and are joined across them; 0 (no tiles, as the LSD algorithm) or [16, 100000]. Default 64.
     };
 
     /** @brief FastLineDetector's parameters (@cite Lee14), used by BASE_FLD, with the meaning of

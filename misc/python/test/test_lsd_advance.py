@@ -392,6 +392,8 @@ class lsd_advance_test(NewOpenCVTests):
                         setattr(params, name, not value)
                     elif isinstance(value, float):
                         setattr(params, name, value * 0.9)
+                    elif name == "seedAlignedNeighbours":  # 0, 1 or 2
+                        setattr(params, name, value - 1)
                     elif name not in ("refine", "EdgeDetectionOperator", "cannyApertureSize"):
                         setattr(params, name, value + 2 if value > 0 else 20)
                 set_(params)
