@@ -190,7 +190,7 @@ public:
         CV_PROP_RW int numBins;             //!< bins of the gradient pseudo-ordering, in [1, 65536]. Default 1024.
         CV_PROP_RW double seedGradientRatio; //!< BASE_FAST_LSD only: regions are seeded only at pixels whose gradient norm is at least this times LSD's threshold quant / sin(angleTolerance), and weaker ones only join them, in [1, 100]; 1 seeds everywhere, as the LSD algorithm. Default 2.5.
         CV_PROP_RW int seedAlignedNeighbours; //!< BASE_FAST_LSD only: regions are seeded only at pixels with at least this many of their two 8-neighbours along their level line aligned with them (an edge, not texture), in [0, 2]; 0 as the LSD algorithm. Default 2.
-        CV_PROP_RW int tileHeight;          //!< BASE_FAST_LSD only: regions grow in parallel in horizontal tiles of about this many rows at the analysis scale, laid out from the image size alone, and are joined across them; 0 (no tiles, as the LSD algorithm) or [16, 100000]. Default 64.
+        CV_PROP_RW int tileHeight;          //!< BASE_FAST_LSD only: regions grow in parallel in horizontal tiles of about this many rows at the analysis scale, laid out from the image size alone, and are joined across them (without tiles, as the LSD algorithm), in 0 (no tiles) or [16, 100000]. Default 64.
     };
 
     /** @brief FastLineDetector's parameters (@cite Lee14), used by BASE_FLD, with the meaning of
