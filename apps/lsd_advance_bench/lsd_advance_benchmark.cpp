@@ -591,8 +591,11 @@ void addFrontEndDiagnostics(FrontEndRun& run, const Mat& gray, const DescribedLi
 // to the previous frame's kept lines under the gates; tracks). Two tables: the front end's
 // figures, and the diagnostics of why lines do not match.
 std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods, const SequenceData& sequence,
-                                          const FrontEndParams& params, int trackFrames)
+                                          const FrontEndParams& params, int trackFrames, bool clahe)
 {
+    // PL-VINS equalises each frame before it detects and describes (CLAHE, clip limit 3, 8 x 8
+    // tiles); the same for every method, so outside the times.
+    const Ptr<CLAHE> equaliser = createCLAHE(3.0, Size(8, 8));
     const std::vector<String>& frames = sequence.imagePaths;
     const bool withPoses = !sequence.P0.empty() && !sequence.poses.empty();
     std::vector<FrontEndRun> runs(methods.size());
@@ -603,8 +606,10 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
     for (size_t k = 0; k < frames.size(); k++)
     {
         std::cerr << "\r[frontend] frame " << k + 1 << "/" << frames.size() << std::flush;
-        const Mat gray = imread(frames[k], IMREAD_GRAYSCALE);
+        Mat gray = imread(frames[k], IMREAD_GRAYSCALE);
         CV_Assert(!gray.empty());
+        if (clahe)
+            equaliser->apply(gray, gray);
         for (size_t m = 0; m < methods.size(); m++)
         {
             FrontEndRun& run = runs[m];
@@ -889,11 +894,13 @@ int run(const AppOptions& args)
         {
             std::cout << format("Front end: lines of at least max(%g px, %g min(W, H)), the %d of highest %s (0: all), "
                                 "LBD on them, one-way matching to the previous frame's with Hamming < %d, endpoint "
-                                "shifts < %g px, angle < %g rad; medians per frame (matches: per pair)\n\n",
+                                "shifts < %g px, angle < %g rad%s; medians per frame (matches: per pair)\n\n",
                                 frontEndParams.minLength, frontEndParams.minLengthRatio, frontEndParams.maxLines,
                                 frontEndParams.rankByLength ? "length" : "response", frontEndParams.maxHamming,
-                                frontEndParams.maxShift, frontEndParams.maxAngle);
-            const std::pair<Table, Table> tables = benchmarkFrontEnd(methods, sequence, frontEndParams, trackFrames);
+                                frontEndParams.maxShift, frontEndParams.maxAngle,
+                                args.has("clahe") ? "; frames equalised by CLAHE" : "");
+            const std::pair<Table, Table> tables = benchmarkFrontEnd(methods, sequence, frontEndParams, trackFrames,
+                                                                     args.has("clahe"));
             table = tables.first;
             table.print(std::cout);
             std::cout << "\nWhy lines do not match (pooled over the pairs; a candidate: a previous kept line within "
@@ -975,6 +982,8 @@ int main(int argc, char** argv)
                                   "(computeLineResponses, the brighter side taken as left) or length }"
         "{max-shift | 200       | front end: largest shift of each endpoint of a match, px, > 0 }"
         "{max-angle | 0.1       | front end: largest change of direction of a match, rad, in (0, 3.14159] }"
+        "{clahe    |            | front end: equalise each frame with CLAHE (clip limit 3, 8 x 8 tiles) before detection "
+                                  "and LBD, as PL-VINS does (outside the times) }"
         "{track-frames | 5      | front end: the tracks counted are those of at least this many frames, >= 2 }"
         "{top      | 0          | LBD matching: each method matches only its N lines of highest response per image (0: all), >= 0; "
                                   "a comma-separated list gives one row per N and method }"
@@ -994,5 +1003,5 @@ int main(int argc, char** argv)
     const String about = "LSDAdvance benchmark, e.g. lsd_advance_benchmark --data=<YorkUrban folder>. Methods: " +
                          lineMethodList() +
                          ". Exit status: 0, 1 on an error, 2 when unreadable image files were left out.";
-    return runApp(argc, argv, keys, about, { "no-match", "frontend" }, run);
+    return runApp(argc, argv, keys, about, { "no-match", "frontend", "clahe" }, run);
 }

@@ -318,6 +318,13 @@ def test_front_end_budget_and_minimum_length_cut_the_kept_lines(still_frames, tm
     assert int(budget["lines kept"]) == 7
 
 
+def test_front_end_clahe_equalises_the_frames_before_detection(still_frames, tmp_path):
+    plain = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=0", "--min-length-ratio=0")["LSD"]
+    equalised = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=0", "--min-length-ratio=0",
+                          "--clahe")["LSD"]
+    assert int(equalised["lines detected"]) != int(plain["lines detected"])
+
+
 def test_front_end_on_kitti_keeps_at_most_the_budget_and_matches_at_most_its_lines(tmp_path):
     """Five KITTI frames with their poses: lines kept <= budget, consistent <= matches <= lines kept,
     a time ratio of 1 for the reference front end."""
