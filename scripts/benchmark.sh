@@ -11,10 +11,13 @@
 # YorkUrban (all images, then the odd images the defaults were not tuned on), KITTI and EuRoC;
 # LBD line matching on the HPatches graffiti pairs, OpenCV's graf1/graf3 and KITTI
 # (doc/matching.md), with all lines and at line budgets of 100, 200 and 400 per image, and the
-# tracks the matches chain into on KITTI and EuRoC; the parameter sweep of
+# tracks the matches chain into on KITTI and EuRoC; a point-line SLAM front end's figures
+# (PL-VINS's rules: minimum length, a budget of 60 lines, one-way gated LBD matching, tracks) on
+# KITTI and EuRoC (doc/matching.md, "In a SLAM front end"); the parameter sweep of
 # doc/parameter_sweep.md; the samples on OpenCV's images. It also writes the YorkUrban charts
-# (doc/pics/results_yorkurban_*.svg) and copies the YorkUrban table into README.md (between its
-# "results: yorkurban" markers). The page says on which machine, commit and date it was made.
+# (doc/pics/results_yorkurban_*.svg) and copies the YorkUrban table and the KITTI front-end table
+# into README.md (between its "results: yorkurban" and "results: frontend" markers). The page
+# says on which machine, commit and date it was made.
 # DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository. Builds
 # (or brings up to date) the programs first. With ELSED's sources beside the repository
 # (../shared/peers/elsed) or in LSD_ADVANCE_ELSED_DIR, ELSED is built as an optional peer and
@@ -51,6 +54,9 @@ STILL="lsd,fld,fld_merge,edlines$PEER,plvins,lsdadvance_paper,lsdadvance_base,ls
 MATCHING="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_merge,lsdadvance"
 SEQUENCE="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_filter,lsdadvance_fastest,lsdadvance,lsdadvance_interframe,lsdadvance_continuous,lsdadvance_tracking,lsdadvance_sequence"
 BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance,lsdadvance_sequence"
+# The front-end mode's methods: the baselines front ends run (PL-VINS's LSD front end first: the
+# time ratios are to it), then LSDAdvance's; one word adds a method.
+FRONTEND="plvins,lsd,fld_half$PEER,lsdadvance,lsdadvance_sequence,lsdadvance_fastest,lsdadvance_scale09"
 
 PAGE="$REPO/doc/results.md"
 WORK="$(mktemp -d)"
@@ -123,6 +129,11 @@ fi
   section "Tracks at equal line budgets: EuRoC V1_01, still camera"
   run "$B" --dataset=sequence --data="$DATA/euroc_v101_static" --methods="$BUDGET" --top=100,200,400
 
+  section "A SLAM front end (PL-VINS's rules, doc/matching.md): KITTI, 51 frames with poses"
+  run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --frontend --methods="$FRONTEND"
+  section "A SLAM front end: EuRoC V1_01, still camera, 95 frames (tracks)"
+  run "$B" --dataset=sequence --data="$DATA/euroc_v101_static" --frontend --methods="$FRONTEND"
+
   section "Parameter sweep (doc/parameter_sweep.md)"
   run "$BUILD/lsd_advance_sweep" --data="$DATA/yorkurban"
 
@@ -146,16 +157,21 @@ for kind in f time long; do
 done
 mv "$OUT" "$PAGE"
 
-# README's results table: the YorkUrban table of the page, between the markers.
+# README's results tables: the YorkUrban table and the KITTI front-end table of the page, each
+# between its markers.
 /usr/bin/python3 - "$PAGE" "$REPO/README.md" <<'PY'
 import re, sys
 page, readme = (open(p, encoding="utf-8").read() for p in sys.argv[1:])
-table = re.search(r"^## YorkUrban-LineSegment, all 51 images\n.*?\n(\|.*?)\n\n", page, re.S | re.M).group(1)
-begin, end = "<!-- results: yorkurban (scripts/benchmark.sh copies it from doc/results.md) -->", "<!-- /results -->"
-if begin not in readme or end not in readme:
-    sys.exit("ERROR: README.md has no %s ... %s markers" % (begin, end))
-head, rest = readme.split(begin, 1)
-open(sys.argv[2], "w", encoding="utf-8").write(head + begin + "\n" + table + "\n" + end + rest.split(end, 1)[1])
+end = "<!-- /results -->"
+for name, heading in (("yorkurban", r"YorkUrban-LineSegment, all 51 images"),
+                      ("frontend", r"A SLAM front end \(PL-VINS's rules, doc/matching.md\): KITTI[^\n]*")):
+    table = re.search(r"^## %s\n.*?\n(\|.*?)\n\n" % heading, page, re.S | re.M).group(1)
+    begin = "<!-- results: %s (scripts/benchmark.sh copies it from doc/results.md) -->" % name
+    if begin not in readme or end not in readme.split(begin, 1)[-1]:
+        sys.exit("ERROR: README.md has no %s ... %s markers" % (begin, end))
+    head, rest = readme.split(begin, 1)
+    readme = head + begin + "\n" + table + "\n" + end + rest.split(end, 1)[1]
+open(sys.argv[2], "w", encoding="utf-8").write(readme)
 PY
-echo "[benchmark] wrote $PAGE, doc/pics/results_yorkurban_*.svg and README's results table" >&2
+echo "[benchmark] wrote $PAGE, doc/pics/results_yorkurban_*.svg and README's results tables" >&2
 /usr/bin/python3 "$REPO/scripts/check_figures.py" "$REPO" || true

@@ -4,7 +4,9 @@
 
 // The LBD matching front end of the benchmark (and of the tests that check its tables):
 // segments -> KeyLines -> LBD descriptors -> mutual nearest neighbours under a Hamming-distance
-// bound. OpenCV's line_descriptor does the describing and matching; only the filtering of its
+// bound; and a point-line SLAM front end's rules (minimum length, line budget, one-way matching
+// under Hamming, endpoint-shift and angle gates) for the benchmark's front-end mode.
+// OpenCV's line_descriptor does the describing and matching; only the filtering of its lines and
 // matches is here.
 
 #ifndef OPENCV_LSD_ADVANCE_APPS_LINE_MATCHING_HPP
@@ -12,8 +14,10 @@
 
 #include <opencv2/line_descriptor.hpp>
 #include <opencv2/lsd_advance.hpp>
+#include <opencv2/lsd_advance/keylines.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <vector>
 
@@ -93,6 +97,104 @@ inline std::vector<cv::DMatch> matchLines(const DescribedLines& lines1, const De
     for (const cv::DMatch& m : forward)
         if (m.distance <= params.maxHamming && (!params.crossCheck || nearestOf2[m.trainIdx] == m.queryIdx))
             kept.push_back(m);
+    return kept;
+}
+
+//! A point-line SLAM front end's rules for its lines (PL-VINS's set-up by default): which lines
+//! of a frame it keeps, and when a line of the frame continues a line of the previous frame.
+struct FrontEndParams
+{
+    double minLength = 0;           //!< px; a line is kept from the larger of this and ...
+    double minLengthRatio = 0.125;  //!< ... this times min(W, H)
+    int maxLines = 60;              //!< the budget: the lines of highest rank (0: all)
+    bool rankByLength = false;      //!< rank by length; else by frontEndResponses()
+    int maxHamming = 30;            //!< a match's Hamming distance is below this (of 256 bits)
+    double maxShift = 200;          //!< px; both endpoints move less than this
+    double maxAngle = 0.1;          //!< rad; the direction turns less than this
+
+    double minLengthIn(cv::Size imageSize) const
+    {
+        return std::max(minLength, minLengthRatio * std::min(imageSize.width, imageSize.height));
+    }
+};
+
+inline double segmentLength(const cv::Vec4f& l)
+{
+    return std::hypot(l[2] - l[0], l[3] - l[1]);
+}
+
+//! computeLineResponses of each segment in whichever orientation has its brighter side on the
+//! left: the same rank for every detector, whether it orients its lines as LSD does or not.
+inline std::vector<float> frontEndResponses(const cv::Mat& gray, const std::vector<cv::Vec4f>& lines)
+{
+    std::vector<cv::Vec4f> flipped;
+    for (const cv::Vec4f& l : lines)
+        flipped.push_back(cv::Vec4f(l[2], l[3], l[0], l[1]));
+    std::vector<float> responses, flippedResponses;
+    cv::ximgproc::computeLineResponses(gray, lines, responses);
+    cv::ximgproc::computeLineResponses(gray, flipped, flippedResponses);
+    for (size_t i = 0; i < responses.size(); i++)
+        responses[i] = std::max(responses[i], flippedResponses[i]);
+    return responses;
+}
+
+//! The lines of at least the minimum length, as many as the budget, highest rank first.
+inline std::vector<cv::Vec4f> frontEndLines(const cv::Mat& gray, const std::vector<cv::Vec4f>& lines,
+                                            const FrontEndParams& params)
+{
+    const double minLength = params.minLengthIn(gray.size());
+    std::vector<cv::Vec4f> longEnough;
+    for (const cv::Vec4f& l : lines)
+        if (segmentLength(l) >= minLength)
+            longEnough.push_back(l);
+    if (params.maxLines <= 0 || longEnough.empty())
+        return longEnough;
+    return bestLines(longEnough, params.rankByLength ? lengthResponses(longEnough, gray.size())
+                                                     : frontEndResponses(gray, longEnough),
+                     params.maxLines);
+}
+
+//! Whether segment b of a frame may continue segment a of the previous one: endpoint shifts and
+//! the change of direction (directed, as KeyLine::angle) within the front end's gates.
+inline bool withinFrontEndGates(const cv::Vec4f& a, const cv::Vec4f& b, const FrontEndParams& params)
+{
+    const double shift2 = params.maxShift * params.maxShift;
+    const double ds = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    const double de = (b[2] - a[2]) * (b[2] - a[2]) + (b[3] - a[3]) * (b[3] - a[3]);
+    const double turn = std::atan2(b[3] - b[1], b[2] - b[0]) - std::atan2(a[3] - a[1], a[2] - a[0]);
+    const double angle = std::abs(std::remainder(turn, 2 * CV_PI));
+    return ds < shift2 && de < shift2 && angle < params.maxAngle;
+}
+
+//! The front end's matches of a frame's lines to the previous frame's (query: previous, train:
+//! current, as LineTracks takes them): each current line's nearest previous line by LBD
+//! (one way), kept within the gates; a previous line continues into one current line only, the
+//! nearest (so that matches chain into tracks).
+inline std::vector<cv::DMatch> matchFrontEnd(const DescribedLines& previous, const DescribedLines& current,
+                                             const FrontEndParams& params)
+{
+    std::vector<cv::DMatch> kept;
+    if (previous.descriptors.empty() || current.descriptors.empty())
+        return kept;
+    std::vector<cv::DMatch> nearest;
+    cv::line_descriptor::BinaryDescriptorMatcher::createBinaryDescriptorMatcher()->match(current.descriptors,
+                                                                                         previous.descriptors, nearest);
+    std::vector<int> best(previous.lines.size(), -1);  // per previous line, its match in kept
+    for (const cv::DMatch& m : nearest)
+    {
+        if (m.distance >= params.maxHamming ||
+            !withinFrontEndGates(previous.lines[m.trainIdx], current.lines[m.queryIdx], params))
+            continue;
+        const cv::DMatch link(m.trainIdx, m.queryIdx, m.distance);
+        int& slot = best[m.trainIdx];
+        if (slot < 0)
+        {
+            slot = (int)kept.size();
+            kept.push_back(link);
+        }
+        else if (link.distance < kept[slot].distance)
+            kept[slot] = link;
+    }
     return kept;
 }
 

@@ -51,7 +51,7 @@ inline std::string lineMethodsFolder()
 //! The methods that are not LSDAdvance variants.
 inline std::vector<std::string> otherLineMethodNames()
 {
-    return { "lsd", "fld", "fld_merge", "edlines", "plvins"
+    return { "lsd", "fld", "fld_merge", "fld_half", "edlines", "plvins"
 #ifdef LSD_ADVANCE_HAVE_ELSED
              , "elsed"
 #endif
@@ -89,6 +89,7 @@ inline LineMethod lineMethodOf(const std::string& name,
 }
 
 //! PL-VINS's LSD set-up: half scale, looser density, lines >= 1/8 of the smaller image side.
+//! (PL-VINS also sets log_eps 1: OpenCV's LSD reads it with LSD_REFINE_ADV only.)
 inline LineMethod plVinsMethod()
 {
     const cv::Ptr<cv::LineSegmentDetector> lsd =
@@ -101,6 +102,21 @@ inline LineMethod plVinsMethod()
         for (const cv::Vec4f& l : all)
             if (std::hypot(l[2] - l[0], l[3] - l[1]) >= minLength)
                 lines.push_back(l);
+    });
+}
+
+//! FLD with its defaults on the image resized to half its size (cv::INTER_AREA), as front ends
+//! run it; the segments in the coordinates of the full image (pixel centres: x = 2 x' + 0.5).
+inline LineMethod fldHalfMethod()
+{
+    const cv::Ptr<cv::ximgproc::FastLineDetector> fld = cv::ximgproc::createFastLineDetector();
+    return lineMethodOf("FLD, half size", [fld](const cv::Mat& gray, std::vector<cv::Vec4f>& lines) {
+        cv::Mat half;
+        cv::resize(gray, half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
+        fld->detect(half, lines);
+        for (cv::Vec4f& l : lines)
+            for (int i = 0; i < 4; i++)
+                l[i] = 2 * l[i] + 0.5f;
     });
 }
 
@@ -171,6 +187,8 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
     }
     if (name == "plvins")
         return plVinsMethod();
+    if (name == "fld_half")
+        return fldHalfMethod();
 #ifdef LSD_ADVANCE_HAVE_ELSED
     if (name == "elsed")
     {

@@ -8,7 +8,9 @@
 //  --dataset=sequence: mean and standard deviation over frames of segments per frame,
 //    long-segment share and time per frame (the paper's Table 1), LBD matching between
 //    consecutive frames checked against the epipolar geometry of the poses (doc/matching.md),
-//    and the tracks these matches chain into;
+//    and the tracks these matches chain into; with --frontend, what a point-line SLAM front end
+//    does per frame (minimum length, line budget, LBD, one-way gated matching, tracks), with
+//    the diagnostics of why lines do not match (doc/matching.md, "In a SLAM front end");
 //  --dataset=homography: LBD matching between image pairs related by a known homography:
 //    matches, correct matches, precision, repeatability and localisation error (doc/matching.md).
 // Prints Markdown tables on stdout, optionally writes CSV and SVG bar charts of time, F and
@@ -503,6 +505,228 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
 }
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+// The reference of the front-end mode's time ratio: PL-VINS's LSD front end.
+const char* const kFrontEndReference = "PL-VINS LSD";
+
+// What one method's front end did over a sequence, and what kept its lines from matching.
+struct FrontEndRun
+{
+    std::vector<double> detected, kept, matches, consistent;          // per frame (matches: per pair)
+    std::vector<double> detectMs, keepMs, lbdMs, matchMs, totalMs;    // per frame
+    double consistentSum = 0, decidedSum = 0;
+    LineTracks tracks;
+    // The diagnostics, pooled over the pairs: the current frame's kept lines ...
+    double lines = 0, withoutCandidate = 0, eligibleCandidate = 0;  // ... without a previous kept line within the
+                                                                    // gates; of them, with an eligible previous line
+    double withCandidate = 0, belowGate = 0;                        // ... with one; whose nearest is below the gate
+    double halves[2][2][2] = {};  // [by length, by response/length][lower, upper half][lines, below the gate]
+    std::vector<double> nearestHamming, lengthRatio, consistentLengthRatio, endpointShift;
+};
+
+// Whether some segment of the earlier frame's is within the front end's gates of `line`.
+bool hasGateCandidate(const std::vector<Vec4f>& earlier, const Vec4f& line, const FrontEndParams& params)
+{
+    for (const Vec4f& e : earlier)
+        if (withinFrontEndGates(e, line, params))
+            return true;
+    return false;
+}
+
+// The diagnostics of one pair: previous and current kept lines, the previous frame's eligible lines
+// (long enough, before the budget), the one-way nearest neighbours and the kept matches.
+void addFrontEndDiagnostics(FrontEndRun& run, const Mat& gray, const DescribedLines& previous,
+                            const std::vector<Vec4f>& previousEligible, const DescribedLines& current,
+                            const std::vector<DMatch>& matches, const std::vector<int>& verdicts,
+                            const FrontEndParams& params)
+{
+    std::vector<DMatch> nearest;
+    if (!previous.descriptors.empty() && !current.descriptors.empty())
+        line_descriptor::BinaryDescriptorMatcher::createBinaryDescriptorMatcher()->match(current.descriptors,
+                                                                                       previous.descriptors, nearest);
+    std::vector<float> responses;
+    if (!current.lines.empty())
+        responses = frontEndResponses(gray, current.lines);
+    std::vector<double> lengths, contrasts;
+    for (size_t i = 0; i < current.lines.size(); i++)
+    {
+        lengths.push_back(segmentLength(current.lines[i]));
+        contrasts.push_back(responses[i] / std::max(lengths.back(), 1.0));
+    }
+    const double medianLength = median(lengths), medianContrast = median(contrasts);
+    for (const DMatch& m : nearest)
+    {
+        const int i = m.queryIdx;
+        run.lines++;
+        if (!hasGateCandidate(previous.lines, current.lines[i], params))
+        {
+            run.withoutCandidate++;
+            run.eligibleCandidate += hasGateCandidate(previousEligible, current.lines[i], params);
+            continue;
+        }
+        const bool below = m.distance < params.maxHamming;
+        run.withCandidate++;
+        run.belowGate += below;
+        run.nearestHamming.push_back(m.distance);
+        const bool upper[2] = { lengths[i] >= medianLength, contrasts[i] >= medianContrast };
+        for (int by = 0; by < 2; by++)
+        {
+            run.halves[by][upper[by]][0]++;
+            run.halves[by][upper[by]][1] += below;
+        }
+    }
+    for (size_t k = 0; k < matches.size(); k++)
+    {
+        const Vec4f &a = previous.lines[matches[k].queryIdx], &b = current.lines[matches[k].trainIdx];
+        const double la = segmentLength(a), lb = segmentLength(b);
+        const double ratio = std::min(la, lb) / std::max(std::max(la, lb), 1e-9);
+        run.lengthRatio.push_back(ratio);
+        if (!verdicts.empty() && verdicts[k] == EPIPOLAR_CONSISTENT)
+            run.consistentLengthRatio.push_back(ratio);
+        run.endpointShift.push_back(0.5 * (std::hypot(b[0] - a[0], b[1] - a[1]) + std::hypot(b[2] - a[2], b[3] - a[3])));
+    }
+}
+
+// The front-end mode: per frame, what a point-line SLAM front end does with each method's lines
+// (detect; keep by the minimum length and the budget; LBD on the kept lines; one-way matching
+// to the previous frame's kept lines under the gates; tracks). Two tables: the front end's
+// figures, and the diagnostics of why lines do not match.
+std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods, const SequenceData& sequence,
+                                          const FrontEndParams& params, int trackFrames, bool clahe)
+{
+    // PL-VINS equalises each frame before it detects and describes (CLAHE, clip limit 3, 8 x 8
+    // tiles); the same for every method, so outside the times.
+    const Ptr<CLAHE> equaliser = createCLAHE(3.0, Size(8, 8));
+    const std::vector<String>& frames = sequence.imagePaths;
+    const bool withPoses = !sequence.P0.empty() && !sequence.poses.empty();
+    std::vector<FrontEndRun> runs(methods.size());
+    std::vector<DescribedLines> previous(methods.size());
+    std::vector<std::vector<Vec4f> > previousEligible(methods.size());
+    for (const LineMethod& m : methods)
+        m.reset();
+    for (size_t k = 0; k < frames.size(); k++)
+    {
+        std::cerr << "\r[frontend] frame " << k + 1 << "/" << frames.size() << std::flush;
+        Mat gray = imread(frames[k], IMREAD_GRAYSCALE);
+        CV_Assert(!gray.empty());
+        if (clahe)
+            equaliser->apply(gray, gray);
+        for (size_t m = 0; m < methods.size(); m++)
+        {
+            FrontEndRun& run = runs[m];
+            TickMeter detectTime, keepTime, lbdTime, matchTime;
+            std::vector<Vec4f> detected;
+            detectTime.start();
+            methods[m].detect(gray, detected);
+            detectTime.stop();
+            keepTime.start();
+            const std::vector<Vec4f> kept = frontEndLines(gray, detected, params);
+            keepTime.stop();
+            lbdTime.start();
+            const DescribedLines current = describeLines(gray, kept);
+            lbdTime.stop();
+            std::vector<DMatch> matches;
+            matchTime.start();
+            if (k > 0)
+                matches = matchFrontEnd(previous[m], current, params);
+            matchTime.stop();
+
+            run.detected.push_back((double)detected.size());
+            run.kept.push_back((double)kept.size());
+            run.detectMs.push_back(detectTime.getTimeMilli());
+            run.keepMs.push_back(keepTime.getTimeMilli());
+            run.lbdMs.push_back(lbdTime.getTimeMilli());
+            run.matchMs.push_back(matchTime.getTimeMilli());
+            run.totalMs.push_back(run.detectMs.back() + run.keepMs.back() + run.lbdMs.back() + run.matchMs.back());
+            if (k > 0)
+            {
+                std::vector<int> verdicts;
+                run.matches.push_back((double)matches.size());
+                if (withPoses)
+                {
+                    const Mat F = fundamentalFromPoses(sequence.P0, sequence.poses[k - 1], sequence.poses[k]);
+                    int consistent = 0;
+                    for (const DMatch& match : matches)
+                    {
+                        verdicts.push_back(checkEpipolar(previous[m].lines[match.queryIdx], current.lines[match.trainIdx], F));
+                        consistent += verdicts.back() == EPIPOLAR_CONSISTENT;
+                        run.decidedSum += verdicts.back() != EPIPOLAR_UNDECIDABLE;
+                    }
+                    run.consistent.push_back(consistent);
+                    run.consistentSum += consistent;
+                }
+                addFrontEndDiagnostics(run, gray, previous[m], previousEligible[m], current, matches, verdicts, params);
+            }
+            run.tracks.addFrame(kept.size(), matches);
+            previous[m] = current;
+            const double minLength = params.minLengthIn(gray.size());
+            previousEligible[m].clear();
+            for (const Vec4f& l : detected)
+                if (segmentLength(l) >= minLength)
+                    previousEligible[m].push_back(l);
+        }
+    }
+    std::cerr << "\n";
+
+    size_t reference = methods.size();
+    for (size_t m = 0; m < methods.size(); m++)
+        if (methods[m].name == kFrontEndReference)
+            reference = m;
+    Table figures, why;
+    figures.header = { "method", "lines detected", "lines kept", "matches" };
+    if (withPoses)
+        for (const char* h : { "consistent share (pooled)", "consistent matches" })
+            figures.header.push_back(h);
+    for (const std::string& h : { format("tracks >= %d frames", trackFrames), std::string("track length (frames, mean)"),
+                                  std::string("detect ms"),
+                                  std::string("keep ms"), std::string("LBD ms"), std::string("match ms"),
+                                  std::string("total ms"), std::string("total / ") + kFrontEndReference })
+        figures.header.push_back(h);
+    why.header = { "method", "kept lines without a candidate", "of them, one among all long-enough",
+                   "nearest Hamming (median)", "below the gate", "longer half", "shorter half",
+                   "higher contrast half", "lower contrast half", "length ratio of matches",
+                   "of consistent matches", "endpoint shift px" };
+    for (size_t m = 0; m < methods.size(); m++)
+    {
+        const FrontEndRun& run = runs[m];
+        std::vector<std::string> row = { methods[m].name, format("%.0f", median(run.detected)),
+                                         format("%.0f", median(run.kept)), format("%.0f", median(run.matches)) };
+        if (withPoses)
+        {
+            row.push_back(format("%.3f", run.decidedSum > 0 ? run.consistentSum / run.decidedSum : 0.0));
+            row.push_back(format("%.0f", median(run.consistent)));
+        }
+        std::string ratio = "-";
+        if (reference < methods.size())
+        {
+            std::vector<double> ratios;
+            for (size_t k = 0; k < run.totalMs.size(); k++)
+                if (runs[reference].totalMs[k] > 0)
+                    ratios.push_back(run.totalMs[k] / runs[reference].totalMs[k]);
+            ratio = format("%.2f", median(ratios));
+        }
+        for (const std::string& cell :
+             { format("%d", run.tracks.atLeast(trackFrames)), format("%.2f", run.tracks.meanLength()),
+               format("%.1f", median(run.detectMs)),
+               format("%.2f", median(run.keepMs)), format("%.1f", median(run.lbdMs)),
+               format("%.2f", median(run.matchMs)), format("%.1f", median(run.totalMs)), ratio })
+            row.push_back(cell);
+        figures.rows.push_back(row);
+
+        const auto share = [](double part, double whole) { return format("%.3f", whole > 0 ? part / whole : 0.0); };
+        why.rows.push_back({ methods[m].name, share(run.withoutCandidate, run.lines),
+                             share(run.eligibleCandidate, run.withoutCandidate),
+                             format("%.0f", median(run.nearestHamming)), share(run.belowGate, run.withCandidate),
+                             share(run.halves[0][1][1], run.halves[0][1][0]), share(run.halves[0][0][1], run.halves[0][0][0]),
+                             share(run.halves[1][1][1], run.halves[1][1][0]), share(run.halves[1][0][1], run.halves[1][0][0]),
+                             format("%.3f", median(run.lengthRatio)),
+                             withPoses ? format("%.3f", median(run.consistentLengthRatio)) : std::string("-"),
+                             format("%.1f", median(run.endpointShift)) });
+    }
+    return { figures, why };
+}
+#endif
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
 Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vector<HomographyPair>& pairs,
                           const LineMatchOptions& matching, int repeats)
 {
@@ -587,6 +811,24 @@ int run(const AppOptions& args)
     if (dataset == "homography")
         throw std::runtime_error("--dataset=homography needs OpenCV's line_descriptor module, absent from this build");
 #endif
+    const bool frontEnd = args.has("frontend");
+    FrontEndParams frontEndParams;
+    int trackFrames = 5;
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    if (frontEnd && dataset != "sequence")
+        throw std::runtime_error("--frontend needs --dataset=sequence");
+    frontEndParams.minLength = args.number("min-length", 0);
+    frontEndParams.minLengthRatio = args.number("min-length-ratio", 0, 1);
+    frontEndParams.maxLines = args.integer("max-lines", 0);
+    frontEndParams.rankByLength = args.oneOf("frontend-rank", { "response", "length" }) == "length";
+    frontEndParams.maxHamming = matching.params.maxHamming;
+    frontEndParams.maxShift = args.number("max-shift", 0, kUnbounded, true);
+    frontEndParams.maxAngle = args.number("max-angle", 0, CV_PI, true);
+    trackFrames = args.integer("track-frames", 2);
+#else
+    if (frontEnd)
+        throw std::runtime_error("--frontend needs OpenCV's line_descriptor module, absent from this build");
+#endif
     setNumThreads(args.integer("threads", 1, 1024));
     // Every option is checked before the first error is reported on the data.
     const FileStorage params = openParamsFile(args.text("params"));
@@ -647,6 +889,30 @@ int run(const AppOptions& args)
                   << getNumThreads() << " thread(s), long = " << longLength << " px"
                   << (skipped ? format(", %zu unreadable skipped", skipped) : std::string()) << "\n\n";
         runInfo = format("%zu frames of %s, %d thread(s)", sequence.imagePaths.size(), data.c_str(), getNumThreads());
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+        if (frontEnd)
+        {
+            std::cout << format("Front end: lines of at least max(%g px, %g min(W, H)), the %d of highest %s (0: all), "
+                                "LBD on them, one-way matching to the previous frame's with Hamming < %d, endpoint "
+                                "shifts < %g px, angle < %g rad%s; medians per frame (matches: per pair)\n\n",
+                                frontEndParams.minLength, frontEndParams.minLengthRatio, frontEndParams.maxLines,
+                                frontEndParams.rankByLength ? "length" : "response", frontEndParams.maxHamming,
+                                frontEndParams.maxShift, frontEndParams.maxAngle,
+                                args.has("clahe") ? "; frames equalised by CLAHE" : "");
+            const std::pair<Table, Table> tables = benchmarkFrontEnd(methods, sequence, frontEndParams, trackFrames,
+                                                                     args.has("clahe"));
+            table = tables.first;
+            table.print(std::cout);
+            std::cout << "\nWhy lines do not match (pooled over the pairs; a candidate: a previous kept line within "
+                         "the shift and angle gates; the halves: of the lines with a candidate, split at the frame's "
+                         "median length or response / length; the shares: nearest LBD neighbour below the Hamming "
+                         "gate):\n\n";
+            tables.second.print(std::cout);
+            if (!csv.empty())
+                table.writeCsv(csv);
+            return skipped == 0 ? 0 : kExitSkipped;
+        }
+#endif
         table = benchmarkSequence(methods, sequence, longLength, matching);
     }
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
@@ -702,8 +968,23 @@ int main(int argc, char** argv)
         "{image1   |            | homography without --data: the first image of one pair (OpenCV sample names are found) }"
         "{image2   |            | homography without --data: the second image }"
         "{homography |          | homography without --data: 3x3 matrix file from image1 to image2 (text, or OpenCV XML) }"
-        "{max-hamming | 30      | LBD matching: largest Hamming distance of a kept mutual nearest neighbour, 0 to 256 }"
+        "{max-hamming | 30      | LBD matching: largest Hamming distance of a kept mutual nearest neighbour (the front end: "
+                                  "its matches are below it), 0 to 256 }"
         "{no-match |            | sequence: skip the LBD matching columns }"
+        "{frontend |            | sequence: the front-end mode, what a point-line SLAM front end does per frame "
+                                  "(keep lines by --min-length, --min-length-ratio and the budget --max-lines, LBD on "
+                                  "them, one-way matching to the previous frame's under the gates --max-hamming "
+                                  "(below it), --max-shift and --max-angle, tracks) }"
+        "{min-length | 0        | front end: lines shorter than this many px are dropped, >= 0 }"
+        "{min-length-ratio | 0.125 | front end: and those shorter than this times min(W, H), in [0, 1] }"
+        "{max-lines | 60        | front end: the budget, the lines of highest --frontend-rank kept per frame (0: all), >= 0 }"
+        "{frontend-rank | response | front end: the rank of the budget, the same for every method: response "
+                                  "(computeLineResponses, the brighter side taken as left) or length }"
+        "{max-shift | 200       | front end: largest shift of each endpoint of a match, px, > 0 }"
+        "{max-angle | 0.1       | front end: largest change of direction of a match, rad, in (0, 3.14159] }"
+        "{clahe    |            | front end: equalise each frame with CLAHE (clip limit 3, 8 x 8 tiles) before detection "
+                                  "and LBD, as PL-VINS does (outside the times) }"
+        "{track-frames | 5      | front end: the tracks counted are those of at least this many frames, >= 2 }"
         "{top      | 0          | LBD matching: each method matches only its N lines of highest response per image (0: all), >= 0; "
                                   "a comma-separated list gives one row per N and method }"
         "{rank     | own        | the response --top ranks by: own (each method's KeyLine response: LSDAdvance's "
@@ -722,5 +1003,5 @@ int main(int argc, char** argv)
     const String about = "LSDAdvance benchmark, e.g. lsd_advance_benchmark --data=<YorkUrban folder>. Methods: " +
                          lineMethodList() +
                          ". Exit status: 0, 1 on an error, 2 when unreadable image files were left out.";
-    return runApp(argc, argv, keys, about, { "no-match" }, run);
+    return runApp(argc, argv, keys, about, { "no-match", "frontend", "clahe" }, run);
 }

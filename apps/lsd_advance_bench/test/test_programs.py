@@ -177,6 +177,13 @@ APP_ERRORS = {
         (["--dataset=homography", "--image1=graf1.png", "--image2=graf3.png", "--homography=missing.xml"],
          ["missing.xml"]),
         (["--dataset=sequence", "--data={files}/unreadable", "--methods=lsd"], ["no readable frame"]),
+        (["--data={files}", "--frontend"], ["--frontend", "--dataset=sequence"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--max-lines=-1"], ["--max-lines"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--min-length-ratio=2"], ["--min-length-ratio"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--frontend-rank=best"], ["--frontend-rank", "best"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--max-angle=0"], ["--max-angle"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--max-shift=0"], ["--max-shift"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--track-frames=1"], ["--track-frames"]),
     ],
     "lsd_advance_sweep": [
         ([], ["--data"]),
@@ -242,6 +249,105 @@ def test_detect_writes_jpeg_drawings_with_ext_jpg(tmp_path):
     succeeded(result)
     assert sorted(os.listdir(str(tmp_path / "out"))) == ["building.jpg", "building.txt", "building_merge.jpg"]
     assert (tmp_path / "out" / "building_merge.jpg").read_bytes()[:2] == b"\xff\xd8"
+
+
+# --------------------------------------------------------------------------------------------
+# The benchmark's front-end mode: the budget, the matches and the tracks, on frames whose answer is known
+
+
+def markdown_table(text, first_header="method"):
+    """The first Markdown table of text whose first column is first_header: {row name: {column: cell}}."""
+    lines = text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("| %s |" % first_header))
+    header = [cell.strip() for cell in lines[start].strip("|").split("|")]
+    rows = {}
+    for line in lines[start + 2:]:
+        if not line.startswith("|"):
+            break
+        cells = [cell.strip() for cell in line.strip("|").split("|")]
+        rows[cells[0]] = dict(zip(header, cells))
+    return rows
+
+
+def front_end(folder, tmp_path, *args):
+    result = run("lsd_advance_benchmark", ["--dataset=sequence", "--data=%s" % folder, "--frontend"] + list(args),
+                 tmp_path)
+    return markdown_table(succeeded(result))
+
+
+@pytest.fixture(scope="module")
+def still_frames(tmp_path_factory):
+    """Folders of 4 and of 6 copies of one image: a still camera."""
+    gray = cv2.imread(os.path.join(DATA, "building.jpg"), cv2.IMREAD_GRAYSCALE)
+    if gray is None:
+        unavailable("no building.jpg in " + DATA)
+    folders = {}
+    for count in (4, 6):
+        folder = tmp_path_factory.mktemp("still%d" % count)
+        for k in range(count):
+            cv2.imwrite(str(folder / ("%06d.png" % k)), gray)
+        folders[count] = folder
+    return folders
+
+
+def test_front_end_tracks_every_kept_line_of_a_still_camera_through_all_frames(still_frames, tmp_path):
+    """Each kept line's nearest LBD neighbour in the same image is itself (distance 0, no shift):
+    every kept line is matched in every pair, and makes one track of all the frames."""
+    for method in ("PL-VINS LSD", "LSD"):
+        six = front_end(still_frames[6], tmp_path, "--methods=plvins,lsd", "--max-lines=25")[method]
+        kept = int(six["lines kept"])
+        assert 0 < kept <= 25
+        assert int(six["matches"]) == kept
+        assert int(six["tracks >= 5 frames"]) == kept
+        assert float(six["track length (frames, mean)"]) == 6
+    four = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=25")["LSD"]
+    assert int(four["matches"]) == int(four["lines kept"]) > 0
+    assert int(four["tracks >= 5 frames"]) == 0  # 4 frames make no track of 5
+    assert int(front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=25",
+                         "--track-frames=4")["LSD"]["tracks >= 4 frames"]) == int(four["lines kept"])
+
+
+def test_front_end_budget_and_minimum_length_cut_the_kept_lines(still_frames, tmp_path):
+    rows = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=0", "--min-length-ratio=0")
+    everything = rows["LSD"]
+    assert everything["lines kept"] == everything["lines detected"]
+    shorter = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=0", "--min-length=60",
+                        "--min-length-ratio=0")["LSD"]
+    assert 0 < int(shorter["lines kept"]) < int(everything["lines kept"])
+    budget = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=7", "--min-length-ratio=0")["LSD"]
+    assert int(budget["lines kept"]) == 7
+
+
+def test_front_end_clahe_equalises_the_frames_before_detection(still_frames, tmp_path):
+    plain = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=0", "--min-length-ratio=0")["LSD"]
+    equalised = front_end(still_frames[4], tmp_path, "--methods=lsd", "--max-lines=0", "--min-length-ratio=0",
+                          "--clahe")["LSD"]
+    assert int(equalised["lines detected"]) != int(plain["lines detected"])
+
+
+def test_front_end_on_kitti_keeps_at_most_the_budget_and_matches_at_most_its_lines(tmp_path):
+    """Five KITTI frames with their poses: lines kept <= budget, consistent <= matches <= lines kept,
+    a time ratio of 1 for the reference front end."""
+    kitti = os.path.join(os.environ.get("LSD_ADVANCE_DATA_DIR", ""), "kitti_seq1")
+    if not os.path.isfile(os.path.join(kitti, "poses.txt")):
+        unavailable("no kitti_seq1 in LSD_ADVANCE_DATA_DIR")
+    frames = sorted(os.listdir(os.path.join(kitti, "image_l")))[:5]
+    (tmp_path / "seq" / "image_l").mkdir(parents=True)
+    for name in frames:
+        os.symlink(os.path.join(kitti, "image_l", name), str(tmp_path / "seq" / "image_l" / name))
+    with open(os.path.join(kitti, "poses.txt")) as poses:
+        (tmp_path / "seq" / "poses.txt").write_text("".join(poses.readlines()[:5]))
+    with open(os.path.join(kitti, "calib.txt")) as calib:
+        (tmp_path / "seq" / "calib.txt").write_text(calib.read())
+    rows = front_end(tmp_path / "seq", tmp_path, "--methods=plvins,lsd,fld_half,lsdadvance", "--max-lines=30")
+    assert set(rows) == {"PL-VINS LSD", "LSD", "FLD, half size", "LSDAdvance"}
+    for row in rows.values():
+        assert int(row["lines kept"]) <= min(30, int(row["lines detected"]))
+        assert 0 <= int(row["consistent matches"]) <= int(row["matches"]) <= int(row["lines kept"])
+        assert 0 <= float(row["consistent share (pooled)"]) <= 1
+        assert int(row["tracks >= 5 frames"]) <= int(row["lines kept"])
+    assert rows["PL-VINS LSD"]["total / PL-VINS LSD"] == "1.00"
+    assert int(rows["PL-VINS LSD"]["matches"]) > 0
 
 
 # --------------------------------------------------------------------------------------------
