@@ -22,20 +22,25 @@ public:
     explicit LsdBase(const LSDAdvance::LSDParams& p)
         : lsd(createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
                                         p.logEps, p.densityThreshold, p.numBins)),
-          scale(p.scale)
+          scale(p.scale), fullScaleSmoothing(p.fullScaleSigma)
     {}
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
     {
         // LSD's resize throws on an image that scales to no pixel; such an image has no segment.
-        if (saturate_cast<int>(gray.cols * scale) > 0 && saturate_cast<int>(gray.rows * scale) > 0)
-            lsd->detect(gray, segments);
-        else
+        if (saturate_cast<int>(gray.cols * scale) <= 0 || saturate_cast<int>(gray.rows * scale) <= 0)
             segments.clear();
+        else if (scale == 1.0 && !fullScaleSmoothing.isIdentity())
+            lsd->detect(fullScaleSmoothing.apply(gray), segments);
+        else if (scale != 1.0 && gray.isSubmatrix())
+            lsd->detect(gray.clone(), segments);  // LSD's Gaussian would read the pixels around the view
+        else
+            lsd->detect(gray, segments);
     }
 
 private:
     Ptr<LineSegmentDetector> lsd;
     double scale;
+    FullScaleSmoothing fullScaleSmoothing;
 };
 
 class FastLsdBase CV_FINAL : public BaseSegmentDetector

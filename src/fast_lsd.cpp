@@ -322,7 +322,7 @@ FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
     : refine(p.refine), scale(p.scale), sigmaScale(p.sigmaScale), quant(p.quant),
       angleTolerance(p.angleTolerance), logEps(p.logEps), densityThreshold(p.densityThreshold),
       seedGradientRatio(p.seedGradientRatio), numBins(p.numBins), seedAlignedNeighbours(p.seedAlignedNeighbours),
-      tileHeight(p.tileHeight), acrossSeams(makePtr<Regions>())
+      tileHeight(p.tileHeight), fullScaleSmoothing(p.fullScaleSigma), acrossSeams(makePtr<Regions>())
 {
     // The parameters are in their ranges: those of the table of parameters.hpp, which every setter checks.
     acrossSeams->fitsAnyRegion = false;
@@ -396,7 +396,8 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
             return;
         const double sigma = scale < 1.0 ? sigmaScale / scale : sigmaScale;
         const int half = (int)std::ceil(sigma * std::sqrt(2.0 * 3.0 * std::log(10.0)));
-        GaussianBlur(gray, blurred, Size(2 * half + 1, 2 * half + 1), sigma);
+        // BORDER_ISOLATED: the border of a view is reflected, as that of its copy, not read around it.
+        GaussianBlur(gray, blurred, Size(2 * half + 1, 2 * half + 1), sigma, sigma, BORDER_REFLECT_101 | BORDER_ISOLATED);
         resize(blurred, scaled, Size(), scale, scale, INTER_LINEAR_EXACT);
         image = &scaled;
     }
@@ -407,6 +408,8 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
         CV_Error_(Error::StsOutOfRange,
                   ("BASE_FAST_LSD analyses at most 2^31 pixels (at its scale), got %dx%d; use a scale below 1 or BASE_LSD",
                    image->cols, image->rows));
+    if (scale == 1.0 && !fullScaleSmoothing.isIdentity())
+        image = &fullScaleSmoothing.apply(gray);
 
     analysed = *image;
     width = image->cols;

@@ -10,6 +10,7 @@
 #define OPENCV_LSD_ADVANCE_FAST_LSD_HPP
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
+#include "full_scale_smoothing.hpp"
 #include <vector>
 
 namespace cv {
@@ -71,6 +72,7 @@ private:
     // and column of "undefined" pixels above and left, so that the 8 neighbours of any pixel with
     // a defined gradient are inside the buffers).
     Mat blurred, scaled, analysed;  //!< the image smoothed, at the analysis scale; a header of the one analysed
+    FullScaleSmoothing fullScaleSmoothing;  //!< at scale 1: LSDParams::fullScaleSigma
     int width = 0, height = 0, stride = 0;
     int threshold = 0;              //!< a pixel's gradient is defined when gx^2 + gy^2 > threshold
     float seedNorm = 0;             //!< gradient norm |g| / 2 from which a pixel seeds a region

@@ -51,6 +51,7 @@
     X(int, refine, LSD_REFINE_NONE, Range::enumOf(kLsdRefinements), "lsdRefine")                                   \
     X(double, scale, 1.0, Range::real(0, OPEN, 1, CLOSED), "lsdScale")                                             \
     X(double, sigmaScale, 0.6, Range::real(0, OPEN, 100, CLOSED), "lsdSigmaScale")                                 \
+    X(double, fullScaleSigma, 0.5, Range::real(0, CLOSED, 3, CLOSED, " px"), nullptr)                              \
     X(double, quant, 2.0, Range::real(0, CLOSED, 255, CLOSED), "lsdQuant")                                         \
     X(double, angleTolerance, 22.5, Range::real(0, OPEN, 180, OPEN, " deg"), "lsdAngleTolerance")                  \
     X(double, logEps, 0.0, Range::real(-1000, CLOSED, 1000, CLOSED), "lsdLogEps")                                  \

@@ -64,12 +64,32 @@ void drawSegments(InputOutputArray image, InputArray lines)
         CV_Error_(Error::StsBadArg, ("LSDAdvance::drawSegments: image must be a non-empty CV_8UC1 or CV_8UC3 "
                                      "image, got %s %dx%d", typeToString(image.type()).c_str(), image.cols(),
                                      image.rows()));
-    const std::vector<Vec4f> segments = toSegments(lines, "LSDAdvance::drawSegments: lines");
+    // What detect() writes and LineSegmentDetector::drawSegments draws: N segments of 4 float or int
+    // coordinates, as N x 1 (or 1 x N) 4-channel or N x 4 1-channel arrays.
+    Mat segments = lines.getMat();
+    const int count = segments.empty() ? 0 : segments.checkVector(4, -1, false);
+    if (count < 0 || (count > 0 && segments.depth() != CV_32F && segments.depth() != CV_32S))
+        CV_Error_(Error::StsBadArg, ("LSDAdvance::drawSegments: lines must be N segments (x1, y1, x2, y2) of CV_32F or "
+                                     "CV_32S: std::vector<Vec4f> or <Vec4i>, an N x 1 4-channel or N x 4 1-channel "
+                                     "Mat, got %s %dx%d", typeToString(segments.type()).c_str(), segments.cols,
+                                     segments.rows));
+    if (count > 0)
+        segments = (segments.isContinuous() ? segments : segments.clone()).reshape(4, count);
     if (image.channels() == 1)
         cvtColor(image, image, COLOR_GRAY2BGR);
     Mat canvas = image.getMat();
-    for (const Vec4f& s : segments)
-        line(canvas, Point2f(s[0], s[1]), Point2f(s[2], s[3]), Scalar(0, 0, 255), 1);
+    const Scalar red(0, 0, 255);
+    for (int i = 0; i < count; i++)
+        if (segments.depth() == CV_32F)
+        {
+            const Vec4f& s = segments.at<Vec4f>(i);
+            line(canvas, Point2f(s[0], s[1]), Point2f(s[2], s[3]), red, 1);
+        }
+        else
+        {
+            const Vec4i& s = segments.at<Vec4i>(i);
+            line(canvas, Point(s[0], s[1]), Point(s[2], s[3]), red, 1);
+        }
 }
 
 }}} // namespace cv::ximgproc::lsda

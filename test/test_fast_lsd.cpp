@@ -107,12 +107,13 @@ struct Agreement
     double ourShare() const { return ours ? (double)oursByOpencv / ours : 1.0; }
 };
 
-// The LSD algorithm itself: every pixel seeds a region, no tiles.
+// The LSD algorithm itself: the image read as it is at scale 1, every pixel seeds a region, no tiles.
 LSDAdvance::LSDParams lsdParams(int refine, double scale)
 {
     LSDAdvance::LSDParams p;
     p.refine = refine;
     p.scale = scale;
+    p.fullScaleSigma = 0;
     p.seedGradientRatio = 1.0;
     p.seedAlignedNeighbours = 0;
     p.tileHeight = 0;
@@ -144,9 +145,9 @@ std::vector<Vec4f> fastLsdSegments(const LSDAdvance::LSDParams& p, const Mat& im
 // Both detectors with the same parameters on every image, pooled.
 Agreement compareWithOpenCV(const std::vector<std::string>& paths, const LSDAdvance::LSDParams& p)
 {
-    Ptr<LineSegmentDetector> opencv = createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant,
-                                                                p.angleTolerance, p.logEps, p.densityThreshold,
-                                                                p.numBins);
+    // BASE_LSD: OpenCV's LSD, on the image smoothed by LSDParams::fullScaleSigma when it is not 0.
+    Ptr<lsda::BaseSegmentDetector> opencv =
+        lsda::createBaseDetector(LSDAdvance::BASE_LSD, p, LSDAdvance::FLDParams(), EdgeDrawing::Params());
     Ptr<lsda::BaseSegmentDetector> ours = fastLsd(p);
     Agreement total;
     for (const std::string& path : paths)
@@ -225,6 +226,16 @@ TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_without_refinement_both_ways)
     const LSDAdvance::LSDParams p = lsdParams(LSD_REFINE_NONE, 1.0);
     expectAgreement("yorkurban (51)", compareWithOpenCV(yorkUrbanImages(1), p), 0.98);
     expectAgreement("kitti_seq1 (every 5th frame)", compareWithOpenCV(kittiFrames(5), p), 0.98);
+    expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.98);
+}
+
+// Both after the pre-smoothing of the defaults (LSDParams::fullScaleSigma), the same for both bases.
+TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_after_the_pre_smoothing_both_ways)
+{
+    LSDAdvance::LSDParams p = lsdParams(LSD_REFINE_NONE, 1.0);
+    p.fullScaleSigma = LSDAdvance::LSDParams().fullScaleSigma;
+    ASSERT_GT(p.fullScaleSigma, 0);
+    expectAgreement("yorkurban (every 3rd)", compareWithOpenCV(yorkUrbanImages(3), p), 0.98);
     expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.98);
 }
 

@@ -397,8 +397,31 @@ TEST(LSDAdvance_StageOutputs, drawSegments_draws_like_LineSegmentDetector)
         Mat image = bad.clone();
         EXPECT_THROW(d->drawSegments(image, lines), cv::Exception) << typeToString(bad.type());
     }
-    Mat image = img.clone();
-    EXPECT_THROW(d->drawSegments(image, Mat(3, 4, CV_32FC1)), cv::Exception);
+    // Every layout detect() writes, float or int, as LineSegmentDetector draws it.
+    std::vector<Vec4i> rounded;
+    d->detect(img, rounded);
+    const Mat ints(rounded);
+    const std::vector<std::pair<const char*, Mat> > layouts = {
+        { "N x 4 CV_32FC1", Mat(lines).reshape(1, (int)lines.size()) }, { "N x 1 CV_32SC4", ints },
+        { "N x 4 CV_32SC1", ints.reshape(1, ints.rows) }, { "1 x N CV_32FC4", Mat(lines).t() } };
+    for (const auto& layout : layouts)
+    {
+        Mat drawn = img.clone(), expected = img.clone();
+        d->drawSegments(drawn, layout.second);
+        createLineSegmentDetector()->drawSegments(expected, layout.second);
+        ASSERT_EQ(CV_8UC3, drawn.type()) << layout.first;
+        EXPECT_EQ(0, cvtest::norm(drawn, expected, NORM_INF)) << layout.first;
+    }
+    Mat drawn = img.clone(), expected = img.clone();
+    d->drawSegments(drawn, rounded);
+    createLineSegmentDetector()->drawSegments(expected, rounded);
+    EXPECT_EQ(0, cvtest::norm(drawn, expected, NORM_INF)) << "std::vector<Vec4i>";
+    for (const Mat& bad : { Mat(3, 5, CV_32FC1), Mat(3, 2, CV_32FC4), Mat(3, 1, CV_64FC4), Mat(3, 4, CV_8UC1) })
+    {
+        Mat image = img.clone();
+        EXPECT_THROW(d->drawSegments(image, bad), cv::Exception) << typeToString(bad.type()) << " " << bad.size();
+        EXPECT_EQ(CV_8UC1, image.type());  // refused before the image is converted
+    }
 }
 
 }} // namespace

@@ -131,12 +131,13 @@ public:
     left (EDLines' are turned round where needed). */
     enum BaseDetector
     {
-        BASE_LSD = 0,     //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams
+        BASE_LSD = 0,     //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams (at scale 1 after LSDParams::fullScaleSigma's Gaussian)
         BASE_FLD = 1,     //!< cv::ximgproc::FastLineDetector with FLDParams
         BASE_EDLINES = 2, //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
         /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: with
         LSDParams::seedGradientRatio 1, LSDParams::seedAlignedNeighbours 0 and LSDParams::tileHeight 0
-        it gives OpenCV's LineSegmentDetector's segments (doc/performance.md). The default. */
+        it gives BASE_LSD's segments, and with LSDParams::fullScaleSigma 0 too those of OpenCV's
+        LineSegmentDetector (doc/performance.md). The default. */
         BASE_FAST_LSD = 3
     };
 
@@ -176,13 +177,15 @@ public:
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
     LineSegmentDetector) and BASE_FAST_LSD, with the meaning of cv::createLineSegmentDetector's arguments,
-    and three of BASE_FAST_LSD's own (seedGradientRatio, seedAlignedNeighbours, tileHeight). */
+    a pre-smoothing at scale 1 for both (fullScaleSigma), and three of BASE_FAST_LSD's own
+    (seedGradientRatio, seedAlignedNeighbours, tileHeight). */
     struct CV_EXPORTS_W_SIMPLE LSDParams
     {
         CV_WRAP LSDParams(); //!< the defaults (OpenCV's LSD uses LSD_REFINE_STD at scale 0.8)
         CV_PROP_RW int refine;              //!< one of cv::LineSegmentDetectorModes. Default LSD_REFINE_NONE.
         CV_PROP_RW double scale;            //!< scale at which the image is read, in (0, 1]. Default 1.
         CV_PROP_RW double sigmaScale;       //!< Gaussian sigma = sigmaScale / scale, used when scale < 1, in (0, 100]. Default 0.6.
+        CV_PROP_RW double fullScaleSigma;   //!< sigma of a Gaussian applied at scale 1 (at scale < 1 the one of sigmaScale smooths), pixels: more of the gradients of staircase edges (lines drawn without anti-aliasing, rendered frames) then agree within angleTolerance; 0 reads the image as the LSD algorithm does, in [0, 3]. Default 0.5.
         CV_PROP_RW double quant;            //!< bound to the gradient quantization error, gray levels, in [0, 255]. Default 2.
         CV_PROP_RW double angleTolerance;   //!< gradient angle tolerance, degrees, in (0, 180). Default 22.5.
         CV_PROP_RW double logEps;           //!< detection threshold -log10(NFA) with LSD_REFINE_ADV, in [-1000, 1000]. Default 0.
@@ -230,7 +233,8 @@ public:
 
     /** @brief Draws segments on an image, as LineSegmentDetector::drawSegments does.
     @param image 8-bit image with 1 or 3 channels; a gray one is converted to BGR in place.
-    @param lines N x 1 (or 1 x N) CV_32FC4 segments, drawn in red, 1 px wide. */
+    @param lines segments (x1, y1, x2, y2) as detect() writes them, CV_32F or CV_32S: std::vector<Vec4f> or
+    std::vector<Vec4i>, an N x 1 (or 1 x N) 4-channel or an N x 4 1-channel Mat; drawn in red, 1 px wide. */
     CV_WRAP virtual void drawSegments(InputOutputArray image, InputArray lines) = 0;
 
     /** @brief Starts a new sequence: the next call is the first frame (alpha = 1). */

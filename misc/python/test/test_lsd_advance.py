@@ -188,6 +188,8 @@ class lsd_advance_test(NewOpenCVTests):
         detector = api.createLSDAdvance()
         detector.setBaseDetector(api.LSDAdvance_BASE_LSD)
         p = detector.getLSDParams()
+        p.fullScaleSigma = 0  # OpenCV's LSD reads the image as it is
+        detector.setLSDParams(p)
         lsd = cv.createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance, p.logEps,
                                            p.densityThreshold, p.numBins)
         base = lsd.detect(building)[0]

@@ -1,0 +1,141 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Stage 0, both LSD bases: the Gaussian pre-smoothing at scale 1 (full_scale_smoothing.hpp).
+// Written here rather than called as cv::GaussianBlur, which builds its kernels and filter on
+// every call (BASE_FAST_LSD allocates nothing per frame once warm), and reads the pixels around a
+// view when the image is one.
+
+#include "precomp.hpp"
+#include "full_scale_smoothing.hpp"
+#include "opencv2/core/hal/intrin.hpp"
+
+namespace cv {
+namespace ximgproc {
+namespace lsda {
+
+namespace {
+
+// Rows of the image smoothed by one task of the parallel loop.
+constexpr int kRowsPerStripe = 16;
+
+// Weights in 8-bit fixed point: each pass's sum to this.
+constexpr int kWeightSum = 256;
+
+// out[x] = (w[0] centre[x] + sum over k of w[k] (before[k - 1][x] + after[k - 1][x]) + 128) / 256
+// for x in [0, n): one pass of the Gaussian, 16 pixels at a time in 16 bits (at most 255 * 256).
+void weightedSum(const uchar* centre, const uchar* const* before, const uchar* const* after, int r, const ushort* w,
+                 int n, uchar* out)
+{
+    constexpr int kHalf = kWeightSum / 2;
+    int x = 0;
+#if CV_SIMD128
+    const v_uint16x8 half = v_setall_u16(kHalf), w0 = v_setall_u16(w[0]);
+    for (; x + 16 <= n; x += 16)
+    {
+        v_uint16x8 lo, hi;
+        v_expand(v_load(centre + x), lo, hi);
+        lo = v_mul_wrap(lo, w0);
+        hi = v_mul_wrap(hi, w0);
+        for (int k = 1; k <= r; k++)
+        {
+            v_uint16x8 beforeLo, beforeHi, afterLo, afterHi;
+            v_expand(v_load(before[k - 1] + x), beforeLo, beforeHi);
+            v_expand(v_load(after[k - 1] + x), afterLo, afterHi);
+            const v_uint16x8 weight = v_setall_u16(w[k]);
+            lo += v_mul_wrap(beforeLo + afterLo, weight);
+            hi += v_mul_wrap(beforeHi + afterHi, weight);
+        }
+        v_store(out + x, v_pack((lo + half) >> 8, (hi + half) >> 8));
+    }
+#endif
+    for (; x < n; x++)
+    {
+        int sum = w[0] * centre[x];
+        for (int k = 1; k <= r; k++)
+            sum += w[k] * (before[k - 1][x] + after[k - 1][x]);
+        out[x] = (uchar)((sum + kHalf) >> 8);
+    }
+}
+
+// The largest kernel radius: that of the largest LSDParams::fullScaleSigma.
+constexpr int kMaxRadius = 16;
+
+} // namespace
+
+// Both passes of a range of rows: the vertical one into the row's buffer, padded by the radius
+// either side with its ends reflected, then the horizontal one into the output (a loop body rather
+// than a lambda: std::function would allocate for it on every frame).
+class FullScaleSmoothing::SmoothedRows CV_FINAL : public ParallelLoopBody
+{
+public:
+    SmoothedRows(FullScaleSmoothing& smoothing, const Mat& gray) : s(smoothing), image(gray) {}
+    void operator()(const Range& rows) const CV_OVERRIDE
+    {
+        const int width = image.cols, height = image.rows, r = s.radius;
+        const uchar* before[kMaxRadius];
+        const uchar* after[kMaxRadius];
+        for (int y = rows.start; y < rows.end; y++)
+        {
+            uchar* v = &s.vertical[(size_t)y * (width + 2 * r)] + r;
+            for (int k = 1; k <= r; k++)
+            {
+                before[k - 1] = image.ptr<uchar>(borderInterpolate(y - k, height, BORDER_REFLECT_101));
+                after[k - 1] = image.ptr<uchar>(borderInterpolate(y + k, height, BORDER_REFLECT_101));
+            }
+            weightedSum(image.ptr<uchar>(y), before, after, r, s.weights.data(), width, v);
+            for (int k = 1; k <= r; k++)
+            {
+                v[-k] = v[borderInterpolate(-k, width, BORDER_REFLECT_101)];
+                v[width - 1 + k] = v[borderInterpolate(width - 1 + k, width, BORDER_REFLECT_101)];
+                before[k - 1] = v - k;
+                after[k - 1] = v + k;
+            }
+            weightedSum(v, before, after, r, s.weights.data(), width, s.smoothed.ptr<uchar>(y));
+        }
+    }
+
+private:
+    FullScaleSmoothing& s;
+    const Mat& image;
+};
+
+FullScaleSmoothing::FullScaleSmoothing(double sigma)
+{
+    // LSD's support of its own Gaussian: the weights beyond are below 10^-3 of the centre's.
+    const int support = sigma > 0 ? (int)std::ceil(sigma * std::sqrt(2.0 * 3.0 * std::log(10.0))) : 0;
+    std::vector<double> gaussian(support + 1);
+    double total = 0;
+    for (int k = 0; k <= support; k++)
+    {
+        gaussian[k] = std::exp(-k * k / (2.0 * sigma * sigma));
+        total += k == 0 ? gaussian[k] : 2 * gaussian[k];
+    }
+    weights.assign(support + 1, 0);
+    int outer = 0;
+    for (int k = 1; k <= support; k++)
+    {
+        weights[k] = (ushort)cvRound(kWeightSum * gaussian[k] / total);
+        outer += 2 * weights[k];
+    }
+    CV_Assert(outer < kWeightSum && support <= kMaxRadius);
+    weights[0] = (ushort)(kWeightSum - outer);
+    // Weights that round to 0 would only cost time.
+    radius = support;
+    while (radius > 0 && weights[radius] == 0)
+        radius--;
+    weights.resize(radius + 1);
+}
+
+const Mat& FullScaleSmoothing::apply(const Mat& gray)
+{
+    CV_CheckTypeEQ(gray.type(), CV_8UC1, "FullScaleSmoothing: the image must be CV_8UC1");
+    vertical.resize((size_t)(gray.cols + 2 * radius) * gray.rows);
+    pixels.resize(gray.total());
+    smoothed = Mat(gray.rows, gray.cols, CV_8UC1, pixels.data());
+    parallel_for_(Range(0, gray.rows), SmoothedRows(*this, gray), std::max(1.0, gray.rows / (double)kRowsPerStripe));
+    return smoothed;
+}
+
+}}} // namespace cv::ximgproc::lsda
