@@ -14,7 +14,9 @@
 # tracks the matches chain into on KITTI and EuRoC; a point-line SLAM front end's figures
 # (PL-VINS's rules: minimum length, a budget of 60 lines, one-way gated LBD matching, tracks) on
 # KITTI and EuRoC (doc/matching.md, "In a SLAM front end"); the parameter sweep of
-# doc/parameter_sweep.md; the samples on OpenCV's images. It also writes the YorkUrban charts
+# doc/parameter_sweep.md; the time of the defaults at one and two threads against LSD and ELSED,
+# and the tiles' instructions with the estimate for more threads (scripts/tile_work.py, valgrind;
+# doc/performance.md); the samples on OpenCV's images. It also writes the YorkUrban charts
 # (doc/pics/results_yorkurban_*.svg) and copies the YorkUrban table and the KITTI front-end table
 # into README.md (between its "results: yorkurban" and "results: frontend" markers). The page
 # says on which machine, commit and date it was made.
@@ -133,6 +135,44 @@ fi
   run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --frontend --methods="$FRONTEND"
   section "A SLAM front end: EuRoC V1_01, still camera, 95 frames (tracks)"
   run "$B" --dataset=sequence --data="$DATA/euroc_v101_static" --frontend --methods="$FRONTEND"
+
+  section "Performance: one and two threads (doc/performance.md)"
+  echo "OpenCV's LSD, ELSED (when built) and the defaults at \`--threads=1\` then \`--threads=2\`, one run each,"
+  echo "back to back; then each two-thread time of the defaults divided by the one-thread time of each"
+  echo "other method (ratios of the medians)."
+  PERF_METHODS="lsd$PEER,lsdadvance"
+  for threads in 1 2; do
+    echo
+    echo "YorkUrban, all 51 images, $threads thread(s):"
+    echo
+    run "$B" --dataset=yorkurban --data="$DATA/yorkurban" --methods="$PERF_METHODS" --repeats=3 --threads=$threads \
+      --csv="$WORK/perf_yorkurban_$threads.csv"
+    echo
+    echo "KITTI, 51 frames, $threads thread(s):"
+    echo
+    run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --methods="$PERF_METHODS" --no-match --threads=$threads \
+      --csv="$WORK/perf_kitti_$threads.csv"
+  done
+  echo
+  /usr/bin/python3 - "$WORK" <<'PY'
+import csv, sys
+def times(path):
+    rows = list(csv.reader(open(path)))
+    column = next(i for i, name in enumerate(rows[0]) if name.startswith("ms /") and "median" in name)
+    return [(row[0], float(row[column])) for row in rows[1:]]
+print("| data | defaults, 2 threads, ms | " + " | ".join("/ %s, 1 thread" % name for name, _ in times(sys.argv[1] + "/perf_kitti_1.csv")) + " |")
+print("|---|---:|" + "---:|" * len(times(sys.argv[1] + "/perf_kitti_1.csv")))
+for data, title in (("yorkurban", "YorkUrban"), ("kitti", "KITTI")):
+    one, two = times("%s/perf_%s_1.csv" % (sys.argv[1], data)), times("%s/perf_%s_2.csv" % (sys.argv[1], data))
+    defaults = two[-1][1]
+    print("| %s | %.1f | %s |" % (title, defaults, " | ".join("%.2f" % (defaults / ms) for _, ms in one)))
+PY
+  echo
+  echo "The tiles' work in instructions (callgrind) and the estimate it gives for more threads, from"
+  echo "\`scripts/tile_work.py\` (every fifth image, at most five per set; shares of the instructions of a"
+  echo "detection; \"largest tile / tiles\" is the largest tile's share of the tiles' work, the worst frame):"
+  echo
+  run /usr/bin/python3 "$REPO/scripts/tile_work.py" "$BUILD" YorkUrban="$DATA/yorkurban/images" KITTI="$DATA/kitti_seq1/image_l"
 
   section "Parameter sweep (doc/parameter_sweep.md)"
   run "$BUILD/lsd_advance_sweep" --data="$DATA/yorkurban"

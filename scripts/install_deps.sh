@@ -14,11 +14,12 @@
 set -euo pipefail
 
 # The Python module (OpenCV's binding generator: Python headers, numpy) and its tests; doxygen +
-# bibtex (texlive-binaries) for scripts/docs.sh.
+# bibtex (texlive-binaries) for scripts/docs.sh; valgrind for the instruction counts of
+# scripts/benchmark.sh (scripts/tile_work.py).
 PACKAGES=(build-essential cmake pkg-config dpkg-dev
           libopencv-dev libopencv-contrib-dev opencv-doc
           python3-dev python3-numpy python3-opencv python3-pytest
-          doxygen texlive-binaries)
+          doxygen texlive-binaries valgrind)
 if [ "${1:-}" = "--intree" ]; then
   # OpenCV's own build (Debian's source package has no 3rdparty/: use system codecs)
   PACKAGES+=(zlib1g-dev libjpeg-dev libpng-dev libtiff-dev libwebp-dev ninja-build python3)

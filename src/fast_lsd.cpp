@@ -524,55 +524,39 @@ void FastLsd::orderTile(Tile& tile)
 
 int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
 {
-    // A compaction: every pixel is written and the end moves on past the seeds (no branch: seeds
-    // and other pixels alternate at random in textured areas), so it writes past the last, by up
-    // to kCompactionSlack.
+    // Two compactions without a branch per pixel (seeds and other pixels alternate at random in
+    // textured areas): the pixels whose norm reaches least, four at a time, then in place those of
+    // them on edges. Most pixels are below the seed level, so the test of the neighbours runs on
+    // a few. Every pixel of the first is written and the end moves on past the seeds, so it
+    // writes past the last, by up to kCompactionSlack.
     const int row = (y + 1) * stride + 1, n = width - 1;
     const float* norm = &gradNorm[row];
+    int* const strong = next;
     int x = 0;
-    if (!onEdges)
-    {
-        for (; x < n; x++)
-        {
-            *next = row + x;
-            next += norm[x] >= least;
-        }
-        return next;
-    }
 #if CV_SIMD128
-    // Four pixels at a time: their dot products with their 8 neighbours (interleaved 16-bit pairs:
-    // one v_dotprod per neighbour), of which the level line picks two, as alignedNeighbours does.
-    const short* u = &level[row][0];
-    const v_int32x4 zero = v_setzero_s32(), limit = v_setall_s32(alignedDot), step = v_setall_s32(kStep);
-    const v_int32x4 minusStep = v_setall_s32(-kStep), needed = v_setall_s32(seedAlignedNeighbours);
     const v_float32x4 leastNorm = v_setall_f32(least);
     for (; x + 4 <= n; x += 4)
     {
-        const v_int16x8 centre = v_load(u + 2 * x);
-        // -1 where the neighbour at the offset is free and aligned, 0 elsewhere.
-        const auto aligned = [&](int offset) {
-            const v_int16x8 v = v_load(u + 2 * (x + offset));
-            return (v_dotprod(centre, v) > limit) & (v_reinterpret_as_s32(v) != zero);
-        };
-        const v_int32x4 both = v_reinterpret_as_s32(centre);
-        const v_int32x4 ux = v_shr<16>(v_shl<16>(both)), uy = v_shr<16>(both);
-        const v_int32x4 alongX = (ux > step) | (ux < minusStep), alongY = (uy > step) | (uy < minusStep);
-        const v_int32x4 horizontal = aligned(-1) + aligned(1), vertical = aligned(-stride) + aligned(stride);
-        const v_int32x4 falling = aligned(-stride - 1) + aligned(stride + 1), rising = aligned(-stride + 1) + aligned(stride - 1);
-        const v_int32x4 diagonal = v_select((ux ^ uy) >= zero, falling, rising);
-        const v_int32x4 minusCount = v_select(alongX & alongY, diagonal, v_select(alongX, horizontal, vertical));
-        // The seeds' indices packed to the front of four, from a table (writes up to 3 past them).
-        const int seeds = v_signmask(v_reinterpret_as_s32(v_load(norm + x) >= leastNorm) & ((zero - minusCount) >= needed));
-        v_store(next, v_setall_s32(row + x) + v_load(kPackedLanes[seeds]));
-        next += kLaneCount[seeds];
+        const int lanes = v_signmask(v_load(norm + x) >= leastNorm);
+        v_store(next, v_setall_s32(row + x) + v_load(kPackedLanes[lanes]));
+        next += kLaneCount[lanes];
     }
 #endif
     for (; x < n; x++)
     {
         *next = row + x;
-        next += (norm[x] >= least) & (alignedNeighbours(row + x) >= seedAlignedNeighbours);
+        next += norm[x] >= least;
     }
-    return next;
+    if (!onEdges)
+        return next;
+    int* seeds = strong;
+    for (const int* candidate = strong; candidate < next; candidate++)
+    {
+        const int q = *candidate;
+        *seeds = q;
+        seeds += alignedNeighbours(q) >= seedAlignedNeighbours;
+    }
+    return seeds;
 }
 
 void FastLsd::joinAcrossSeams()

@@ -49,15 +49,13 @@ void unite(std::vector<int>& parent, int a, int b)
         parent[a] = b;
 }
 
-// Cells fit in 32 bits: coordinates are finite and bounded (checked by the caller), and the
-// cell size, endpointDistance, is at least 0.1 px (its range, parameters.hpp).
 int64 cellKey(int64 cx, int64 cy)
 {
     return (int64)(((uint64)(uint32_t)cx << 32) | (uint64)(uint32_t)cy);
 }
 
-// Open-addressing hash table from a cell key to a dense cell number. A hash instead of a sorted
-// array or a dense image-sized grid: O(1) per look-up whatever the spread of the coordinates.
+// Open-addressing hash table from a cell key to a dense cell number: O(1) per look-up whatever
+// the spread of the coordinates.
 class CellTable
 {
 public:
@@ -128,20 +126,34 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         const Vec4f& s = segments[e >> 1];
         return (e & 1) ? Point2d(s[2], s[3]) : Point2d(s[0], s[1]);
     };
-    auto cellOf = [&](const Point2d& p) {
-        return std::make_pair((int64)std::floor(p.x / cellSize), (int64)std::floor(p.y / cellSize));
-    };
-
     // Endpoints filed under their grid cell (compressed rows, endpoints in increasing order).
     // Cells are squares of the adjacency distance, so two endpoints closer than it are in the
     // same or in neighbouring cells: each endpoint is compared with the endpoints of 9 cells only.
-    CellTable table(ws.tableKeys, ws.tableCells, 2 * n);
-    int cellCount = 0;
+    // The cells' coordinates fit in 32 bits: coordinates are finite and bounded (checked by the
+    // caller), and the cell size, endpointDistance, is at least 0.1 px (its range, parameters.hpp).
+    ws.endpointCell.resize(2 * (size_t)n);
+    Point lowest(INT_MAX, INT_MAX), highest(INT_MIN, INT_MIN);
+    for (int e = 0; e < 2 * n; e++)
+    {
+        const Point2d p = endpoint(e);
+        const Point c((int)std::floor(p.x / cellSize), (int)std::floor(p.y / cellSize));
+        ws.endpointCell[e] = c;
+        lowest = Point(std::min(lowest.x, c.x), std::min(lowest.y, c.y));
+        highest = Point(std::max(highest.x, c.x), std::max(highest.y, c.y));
+    }
+    // A dense grid over the endpoints' cells (and a border of empty ones) when it is not much
+    // larger than the endpoints (an image's segments), where the three cells of a row of a
+    // neighbourhood are consecutive; a hash of the cells otherwise (spread coordinates).
+    const int64 gridWidth = n > 0 ? (int64)highest.x - lowest.x + 3 : 0, gridHeight = n > 0 ? (int64)highest.y - lowest.y + 3 : 0;
+    const bool dense = gridWidth * gridHeight <= 8 * (int64)n + 4096;
+    CellTable table(ws.tableKeys, ws.tableCells, dense ? 0 : 2 * n);
+    int cellCount = dense ? (int)(gridWidth * gridHeight) : 0;
     ws.cellOfEndpoint.resize(2 * (size_t)n);
     for (int e = 0; e < 2 * n; e++)
     {
-        const std::pair<int64, int64> c = cellOf(endpoint(e));
-        ws.cellOfEndpoint[e] = table.insert(cellKey(c.first, c.second), cellCount);
+        const Point c = ws.endpointCell[e];
+        ws.cellOfEndpoint[e] = dense ? (int)((c.y - lowest.y + 1) * gridWidth + c.x - lowest.x + 1)
+                                     : table.insert(cellKey(c.x, c.y), cellCount);
     }
     ws.cellStart.assign(cellCount + 1, 0);
     for (int e = 0; e < 2 * n; e++)
@@ -156,26 +168,39 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
     ws.parent.resize(n);
     for (int i = 0; i < n; i++)
         ws.parent[i] = i;
+    const bool neighbourBins = params.angleBinning == LSDAdvance::ANGLE_BINS_NEIGHBOURS;
     for (int e = 0; e < 2 * n; e++)
     {
         const int seg = e >> 1;
         const Point2d p = endpoint(e);
-        const std::pair<int64, int64> c = cellOf(p);
+        // The endpoints of cellEndpoints[begin .. end) that are close to p join seg's group.
+        const auto compare = [&](int begin, int end) {
+            for (int k = begin; k < end; k++)
+            {
+                const int other = ws.cellEndpoints[k] >> 1;
+                if (other <= seg || !binsPair(ws.bin[seg], ws.bin[other], bins, neighbourBins))
+                    continue;
+                const Point2d d = endpoint(ws.cellEndpoints[k]) - p;
+                if (d.dot(d) < maxDistSq)
+                    unite(ws.parent, seg, other);
+            }
+        };
+        if (dense)
+        {
+            for (int dy = -1; dy <= 1; dy++)
+            {
+                const int centre = ws.cellOfEndpoint[e] + dy * (int)gridWidth;
+                compare(ws.cellStart[centre - 1], ws.cellStart[centre + 2]);
+            }
+            continue;
+        }
+        const Point c = ws.endpointCell[e];
         for (int dy = -1; dy <= 1; dy++)
             for (int dx = -1; dx <= 1; dx++)
             {
-                const int cell = table.find(cellKey(c.first + dx, c.second + dy));
-                if (cell < 0)
-                    continue;
-                for (int k = ws.cellStart[cell]; k < ws.cellStart[cell + 1]; k++)
-                {
-                    const int other = ws.cellEndpoints[k] >> 1;
-                    if (other <= seg || !binsPair(ws.bin[seg], ws.bin[other], bins, params.angleBinning == LSDAdvance::ANGLE_BINS_NEIGHBOURS))
-                        continue;
-                    const Point2d d = endpoint(ws.cellEndpoints[k]) - p;
-                    if (d.dot(d) < maxDistSq)
-                        unite(ws.parent, seg, other);
-                }
+                const int cell = table.find(cellKey((int64)c.x + dx, (int64)c.y + dy));
+                if (cell >= 0)
+                    compare(ws.cellStart[cell], ws.cellStart[cell + 1]);
             }
     }
 

@@ -181,9 +181,10 @@ CV_EXPORTS int angleBin(const Vec4f& segment, double binWidth);
 struct GroupingWorkspace
 {
     std::vector<int> bin;             //!< angle bin of each segment
-    std::vector<int64> tableKeys;     //!< open-addressing hash table: grid cell key ...
-    std::vector<int> tableCells;      //!< ... -> dense cell number (-1: empty slot)
-    std::vector<int> cellOfEndpoint;  //!< dense cell number of each endpoint
+    std::vector<Point> endpointCell;  //!< grid cell (x, y) of each endpoint
+    std::vector<int64> tableKeys;     //!< without a dense grid, open-addressing hash table: grid cell key ...
+    std::vector<int> tableCells;      //!< ... -> cell number (-1: empty slot)
+    std::vector<int> cellOfEndpoint;  //!< cell number of each endpoint (in the dense grid or the table)
     std::vector<int> cellStart;       //!< endpoints of cell c: cellEndpoints[cellStart[c] .. cellStart[c+1])
     std::vector<int> cellEndpoints;
     std::vector<int> parent;          //!< union-find forest over the segments
@@ -191,7 +192,7 @@ struct GroupingWorkspace
     std::vector<int> fill;
 };
 
-//! Groups in O(n) expected time (a hashed grid of endpoints, union-find). The parameters are in
+//! Groups in O(n) expected time (a grid of endpoints, dense or hashed, union-find). The parameters are in
 //! their ranges (parameters.hpp).
 CV_EXPORTS void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& params,
                               SegmentGroups& groups, GroupingWorkspace& workspace);

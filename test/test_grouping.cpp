@@ -52,6 +52,23 @@ TEST(LSDAdvance_Grouping, endpoints_closer_than_the_distance_connect)
     EXPECT_EQ(wide[0], wide[2]);
 }
 
+// Endpoints spread far beyond an image take the hashed grid instead of the dense one: the same rule.
+TEST(LSDAdvance_Grouping, endpoints_spread_far_apart_connect_by_the_same_rule)
+{
+    const std::vector<Vec4f> segments = {
+        segmentAt(-9e6, -9e6, 0, 50),
+        segmentAt(-9e6 + 59, -9e6, 0, 50),  // 9 px gap: adjacent
+        segmentAt(9e6, 9e6, 0, 50),
+        segmentAt(9e6 + 61, 9e6, 0, 50),    // 11 px gap: not adjacent
+        segmentAt(9e6 - 8, 9e6 + 3, 0, 5),  // its end 3 px under the start of segment 2
+    };
+    const std::vector<int> id = groupIds(segments, groupingParams(true));
+    EXPECT_EQ(id[0], id[1]);
+    EXPECT_NE(id[1], id[2]);
+    EXPECT_NE(id[2], id[3]);
+    EXPECT_EQ(id[2], id[4]);
+}
+
 TEST(LSDAdvance_Grouping, groups_are_connected_components)
 {
     // a-b and b-c are adjacent, a-c are not: all three form one group.
