@@ -249,7 +249,7 @@ def test_detect_writes_jpeg_drawings_with_ext_jpg(tmp_path):
 
 METHOD_FILES = sorted(f[:-4] for f in os.listdir(METHODS) if f.endswith(".yml"))
 PRESET_FILES = {"lsdadvance": "MOST_ACCURATE", "lsdadvance_fastest": "FASTEST", "lsdadvance_paper": "PAPER",
-                "lsdadvance_sequence": "SEQUENCE"}
+                "lsdadvance_sequence": "SEQUENCE", "lsdadvance_front_end": "FRONT_END"}
 
 
 def test_the_presets_and_the_variants_of_the_tables_have_method_files():
