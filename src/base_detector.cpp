@@ -31,6 +31,7 @@ public:
             lsd->detect(gray, segments);
         else
             segments.clear();
+        toFullResolution(segments, scale);
     }
 
 private:
@@ -41,11 +42,16 @@ private:
 class FastLsdBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit FastLsdBase(const LSDAdvance::LSDParams& p) : lsd(p) {}
-    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE { lsd.detect(gray, segments); }
+    explicit FastLsdBase(const LSDAdvance::LSDParams& p) : lsd(p), scale(p.scale) {}
+    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
+    {
+        lsd.detect(gray, segments);
+        toFullResolution(segments, scale);
+    }
 
 private:
     FastLsd lsd;
+    double scale;
 };
 
 // FastLineDetector orients its segments brighter side on the left, like LSD.
@@ -105,6 +111,16 @@ Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParam
     default:
         CV_Error_(Error::StsOutOfRange, ("unknown base detector %d", kind));
     }
+}
+
+void toFullResolution(std::vector<Vec4f>& segments, double scale)
+{
+    if (scale == 1.0)
+        return;
+    // resize() centres pixel i of the scaled image at (i + 0.5) / scale - 0.5 of the full one.
+    const float shift = (float)(0.5 / scale - 0.5);
+    for (Vec4f& s : segments)
+        s += Vec4f::all(shift);
 }
 
 void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments)

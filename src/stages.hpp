@@ -58,6 +58,11 @@ public:
 CV_EXPORTS Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
                                                        const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines);
 
+//! LSD's segments at LSDParams::scale (OpenCV's and FastLsd's) are the coordinates in the scaled
+//! image divided by the scale; this moves them onto the full image's pixel-centre convention
+//! (0.5 (1 / scale - 1) px along both axes: 0.5 px at scale 0.5). Both LSD bases call it.
+CV_EXPORTS void toFullResolution(std::vector<Vec4f>& segments, double scale);
+
 //! Turns round each segment on whose right the image is brighter than on its left (sum of 5
 //! samples 2 px either side, nearest pixel, samples outside the image skipped).
 CV_EXPORTS void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments);

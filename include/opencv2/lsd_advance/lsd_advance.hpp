@@ -217,7 +217,7 @@ public:
     {
         CV_WRAP LSDParams(); //!< the defaults (OpenCV's LSD uses LSD_REFINE_STD at scale 0.8)
         CV_PROP_RW int refine;              //!< one of cv::LineSegmentDetectorModes. Default LSD_REFINE_NONE.
-        CV_PROP_RW double scale;            //!< scale at which the image is read, in (0, 1]. Default 1.
+        CV_PROP_RW double scale;            //!< scale at which the image is read; the segments are returned in the full image's coordinates (pixel centres, see "Coordinates": unlike OpenCV's LSD below scale 1), in (0, 1]. Default 1.
         CV_PROP_RW double sigmaScale;       //!< Gaussian sigma = sigmaScale / scale, used when scale < 1, in (0, 100]. Default 0.6.
         CV_PROP_RW double quant;            //!< bound to the gradient quantization error, gray levels, in [0, 255]. Default 2.
         CV_PROP_RW double angleTolerance;   //!< gradient angle tolerance, degrees, in (0, 180). Default 22.5.
