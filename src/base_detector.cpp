@@ -35,6 +35,7 @@ public:
             lsd->detect(gray.clone(), segments);  // LSD's Gaussian would read the pixels around the view
         else
             lsd->detect(gray, segments);
+        toFullResolution(segments, scale);
     }
 
 private:
@@ -46,11 +47,16 @@ private:
 class FastLsdBase CV_FINAL : public BaseSegmentDetector
 {
 public:
-    explicit FastLsdBase(const LSDAdvance::LSDParams& p) : lsd(p) {}
-    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE { lsd.detect(gray, segments); }
+    explicit FastLsdBase(const LSDAdvance::LSDParams& p) : lsd(p), scale(p.scale) {}
+    void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
+    {
+        lsd.detect(gray, segments);
+        toFullResolution(segments, scale);
+    }
 
 private:
     FastLsd lsd;
+    double scale;
 };
 
 // FastLineDetector orients its segments brighter side on the left, like LSD.
@@ -110,6 +116,16 @@ Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParam
     default:
         CV_Error_(Error::StsOutOfRange, ("unknown base detector %d", kind));
     }
+}
+
+void toFullResolution(std::vector<Vec4f>& segments, double scale)
+{
+    if (scale == 1.0)
+        return;
+    // resize() centres pixel i of the scaled image at (i + 0.5) / scale - 0.5 of the full one.
+    const float shift = (float)(0.5 / scale - 0.5);
+    for (Vec4f& s : segments)
+        s += Vec4f::all(shift);
 }
 
 void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments)

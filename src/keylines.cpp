@@ -32,9 +32,31 @@ void LSDAdvance::detect(InputArray image, std::vector<KeyLine>& keylines)
     detect(image, lines);
     linesToKeyLines(lines, image.size(), keylines);
     std::vector<float> responses;
-    lsda::lineResponses(lsda::toGray8U(image), lines, responses);
+    getLastResponses(responses);  // detect() computed them: its order
+    CV_Assert(responses.size() == keylines.size());
     for (size_t i = 0; i < keylines.size(); i++)
         keylines[i].response = responses[i];
+}
+
+void keepStrongestKeyLines(const std::vector<KeyLine>& keylines, int maxLines, std::vector<KeyLine>& kept)
+{
+    CV_INSTRUMENT_REGION();
+    CV_CheckGE(maxLines, 0, "keepStrongestKeyLines: maxLines must be 0 (all) or positive");
+    std::vector<float> responses(keylines.size());
+    std::vector<int> order(keylines.size());
+    for (size_t i = 0; i < keylines.size(); i++)
+    {
+        responses[i] = keylines[i].response;
+        order[i] = (int)i;
+    }
+    lsda::strongestFirst(responses, maxLines, order);
+    std::vector<KeyLine> result(order.size());  // keylines may be kept itself
+    for (size_t j = 0; j < order.size(); j++)
+    {
+        result[j] = keylines[order[j]];
+        result[j].class_id = (int)j;
+    }
+    kept.swap(result);
 }
 
 void linesToKeyLines(InputArray linesIn, Size imageSize, std::vector<KeyLine>& keylines)

@@ -51,9 +51,19 @@ public:
         lsda::drawSegments(image, lines);
     }
 
-    void reset() CV_OVERRIDE { history = lsda::KeptCounts(); }
+    void reset() CV_OVERRIDE
+    {
+        history = lsda::KeptCounts();
+        framesInSequence = 0;
+    }
 
     LSDAdvanceStats getLastStats() const CV_OVERRIDE { return lastStats; }
+
+    void getLastResponses(OutputArray responses) const CV_OVERRIDE
+    {
+        CV_INSTRUMENT_REGION();
+        Mat(frame.responses).copyTo(responses);
+    }
 
     void getLastStageOutputs(OutputArray base, OutputArray filtered, OutputArray groupLabels,
                              OutputArray merged) const CV_OVERRIDE
@@ -126,7 +136,7 @@ private:
 
     // Stages 1-3 in the configured order on the segments in frame.incoming, which become the
     // frame's base segments, then the clipping to the image gray, or to an image of imageSize
-    // when there is no gray (processSegments; none when imageSize is empty).
+    // when there is no gray (processSegments; none when imageSize is empty), then the selection.
     void runStages(double baseMs, const Mat* gray, OutputArray lines, Size imageSize = Size())
     {
         if (gray)
@@ -154,10 +164,19 @@ private:
             lsda::clipToImage(last, imageSize, frame.clipped, frame.keptFrom);
             frame.provenance.followKept(frame.keptFrom, last.size());
         }
-        const std::vector<Vec4f>& output = imageSize.empty() ? last : frame.clipped;
-        stats.outputSegments = (int)output.size();
-        Mat(output).copyTo(lines);
+        const std::vector<Vec4f>& unselected = imageSize.empty() ? last : frame.clipped;
+
+        const int64 s = getTickCount();
+        const lsda::SelectionParams selection(parameters.own);
+        frame.selection.apply(unselected, gray, lsda::selectionMinLength(selection, imageSize), selection.maxLines,
+                              frame.selected, frame.responses, frame.keptFrom);
+        frame.provenance.followKept(frame.keptFrom, unselected.size());
+        stats.selectionMs = elapsedMs(s);
+        stats.outputSegments = (int)frame.selected.size();
+        stats.frameInSequence = framesInSequence;
+        Mat(frame.selected).copyTo(lines);
         history.add(stats.filteredSegments);  // the frame counts only once its output is delivered
+        framesInSequence++;
         lastStats = stats;
     }
 
@@ -199,7 +218,8 @@ private:
     struct Frame
     {
         std::vector<Vec4f> incoming;  // segments of the current call until its stages run
-        std::vector<Vec4f> base, filtered, merged, clipped;
+        std::vector<Vec4f> base, filtered, merged, clipped, selected;
+        std::vector<float> responses;  // of the selected lines, with an image
         bool grouped = false;         // groups partition stage 2's input
         lsda::SegmentGroups groups;
         std::vector<int> keptFrom, mergedInto;
@@ -207,8 +227,10 @@ private:
         lsda::LengthFilter lengthFilter;
         lsda::GroupingWorkspace grouping;
         lsda::MergeWorkspace merging;
+        lsda::LineSelection selection;
     } frame;
     lsda::KeptCounts history;  // the sequence state
+    int framesInSequence = 0;
     LSDAdvanceStats lastStats;
 };
 

@@ -203,6 +203,14 @@ Parameters presetParameters(int preset)
         // at an equal line budget (doc/matching.md).
         p.own.keepStrongSegments = true;
         break;
+    case LSDAdvance::PRESET_FRONT_END:
+        // A point-line front end's regime (PL-VINS: LSD at scale 0.5, lines of at least
+        // 0.125 min(W, H), about 60 of them): our base nearer full resolution, the same minimum and
+        // budget, the strongest lines first (doc/matching.md).
+        p.lsd.scale = 0.9;
+        p.own.minLineLengthRatio = 0.125;
+        p.own.maxLines = 60;
+        break;
     default:
         CV_Error_(Error::StsOutOfRange, ("createLSDAdvance: preset must be %s, got %d",
                                          Range::enumOf(kPresets).describe().c_str(), preset));

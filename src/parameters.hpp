@@ -44,7 +44,10 @@
     X(double, lengthWeight, LengthWeight, 0.2, Range::real(0, CLOSED, 1, CLOSED), nullptr)                        \
     X(double, proximityRatio, ProximityRatio, 1.0, Range::real(0, OPEN, 10, CLOSED), nullptr)                     \
     X(double, mergeThreshold, MergeThreshold, 0.6, Range::real(0, CLOSED, 1, CLOSED), nullptr)                    \
-    X(double, maxPerpendicularOffset, MaxPerpendicularOffset, 1.5, Range::real(0, CLOSED, 100, CLOSED, " px"), nullptr)
+    X(double, maxPerpendicularOffset, MaxPerpendicularOffset, 1.5, Range::real(0, CLOSED, 100, CLOSED, " px"), nullptr) \
+    X(double, minLineLength, MinLineLength, 0.0, Range::real(0, CLOSED, 100000, CLOSED, " px"), nullptr)          \
+    X(double, minLineLengthRatio, MinLineLengthRatio, 0.0, Range::real(0, CLOSED, 1, CLOSED), nullptr)            \
+    X(int, maxLines, MaxLines, 0, Range::real(1, CLOSED, 100000, CLOSED).orValue(0, "all"), nullptr)
 
 // LSDAdvance::LSDParams: X(type, field, default, range, key in files of version 4.6.0 or nullptr)
 #define LSDA_LSD_PARAMS(X)                                                                                         \
@@ -104,7 +107,8 @@ const char* const kMergeStrategies[] = { "MERGE_NONE", "MERGE_BASELINES", "MERGE
 const char* const kLsdRefinements[] = { "LSD_REFINE_NONE", "LSD_REFINE_STD", "LSD_REFINE_ADV" };
 const char* const kGradientOperators[] = { "PREWITT", "SOBEL", "SCHARR", "LSD" };
 const int kApertureSizes[] = { 3, 5, 7 };
-const char* const kPresets[] = { "PRESET_MOST_ACCURATE", "PRESET_FASTEST", "PRESET_PAPER", "PRESET_SEQUENCE" };
+const char* const kPresets[] = { "PRESET_MOST_ACCURATE", "PRESET_FASTEST", "PRESET_PAPER", "PRESET_SEQUENCE",
+                                  "PRESET_FRONT_END" };
 
 #define LSDA_COUNT_OF(names) (int)(sizeof(names) / sizeof(names[0]))
 static_assert(LSDA_COUNT_OF(kBaseDetectors) == LSDAdvance::BASE_FAST_LSD + 1, "a name per LSDAdvance::BaseDetector");
@@ -116,7 +120,7 @@ static_assert(LSDA_COUNT_OF(kStageOrders) == LSDAdvance::MERGE_THEN_FILTER + 1, 
 static_assert(LSDA_COUNT_OF(kAngleBinnings) == LSDAdvance::ANGLE_BINS_NEIGHBOURS + 1, "a name per LSDAdvance::AngleBinning");
 static_assert(LSDA_COUNT_OF(kMergeStrategies) == LSDAdvance::MERGE_LONGEST_FIRST + 1, "a name per LSDAdvance::MergeStrategy");
 static_assert(LSDA_COUNT_OF(kLsdRefinements) == LSD_REFINE_ADV + 1, "a name per cv::LineSegmentDetectorModes");
-static_assert(LSDA_COUNT_OF(kPresets) == LSDAdvance::PRESET_SEQUENCE + 1, "a name per LSDAdvance::Preset");
+static_assert(LSDA_COUNT_OF(kPresets) == LSDAdvance::PRESET_FRONT_END + 1, "a name per LSDAdvance::Preset");
 static_assert(LSDA_COUNT_OF(kGradientOperators) == EdgeDrawing::LSD + 1, "a name per EdgeDrawing::GradientOperator");
 
 //! Whether a bound belongs to its range.

@@ -58,6 +58,11 @@ public:
 CV_EXPORTS Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
                                                        const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines);
 
+//! LSD's segments at LSDParams::scale (OpenCV's and FastLsd's) are the coordinates in the scaled
+//! image divided by the scale; this moves them onto the full image's pixel-centre convention
+//! (0.5 (1 / scale - 1) px along both axes: 0.5 px at scale 0.5). Both LSD bases call it.
+CV_EXPORTS void toFullResolution(std::vector<Vec4f>& segments, double scale);
+
 //! Turns round each segment on whose right the image is brighter than on its left (sum of 5
 //! samples 2 px either side, nearest pixel, samples outside the image skipped).
 CV_EXPORTS void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments);
@@ -275,6 +280,43 @@ CV_EXPORTS bool clipToDomain(const Vec4f& segment, const Size& imageSize, Vec4f&
 //! clipToDomain() on each segment; keptFrom gets the index in segments of each one kept.
 CV_EXPORTS void clipToImage(const std::vector<Vec4f>& segments, const Size& imageSize,
                             std::vector<Vec4f>& clipped, std::vector<int>& keptFrom);
+
+//--- after the clipping: the front end's selection (line_selection.cpp)
+
+//! The rows of LSDAdvance::Params that the selection reads.
+struct SelectionParams
+{
+    explicit SelectionParams(const LSDAdvance::Params& p = LSDAdvance::Params())
+        : minLineLength(p.minLineLength), minLineLengthRatio(p.minLineLengthRatio), maxLines(p.maxLines)
+    {}
+    double minLineLength, minLineLengthRatio;
+    int maxLines;
+};
+
+//! The selection's length threshold: the larger of minLineLength and minLineLengthRatio times
+//! min(W, H) of imageSize (the ratio is not used when imageSize is empty); 0 when both are off.
+CV_EXPORTS double selectionMinLength(const SelectionParams& params, Size imageSize);
+
+//! Orders keys (one per line) decreasing, equal keys in index order, and keeps the first maxLines
+//! (0: all) of the lines in `order`, given as indices into the keys. order is sorted in place.
+CV_EXPORTS void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<int>& order);
+
+//! The selection of one call: lines shorter than minLength are dropped; the others are ordered
+//! by decreasing response (their responses on gray, when given) or else by decreasing length,
+//! and the first params.maxLines (0: all) are kept. keptFrom gets the index in lines of each kept
+//! one, in output order; responses, with gray, their responses (else it is emptied).
+class LineSelection
+{
+public:
+    void apply(const std::vector<Vec4f>& lines, const Mat* gray, double minLength, int maxLines,
+               std::vector<Vec4f>& selected, std::vector<float>& responses, std::vector<int>& keptFrom);
+
+private:
+    std::vector<Vec4f> longEnough;
+    std::vector<int> longFrom;
+    std::vector<float> keys;
+    std::vector<int> order;
+};
 
 //--- through the stages: which returned line each base segment is part of (provenance.cpp)
 

@@ -149,7 +149,12 @@ TEST(LSDAdvance_BaseDetectors, edlines_segments_are_turned_brighter_left)
     std::vector<Vec4f> raw, oriented = std::vector<Vec4f>();
     ed->detectEdges(img);
     ed->detectLines(raw);
-    onBase(LSDAdvance::BASE_EDLINES, false)->detect(img, oriented);
+    // The base segments in EdgeDrawing's order (the output is ordered by response).
+    Ptr<LSDAdvance> detector = onBase(LSDAdvance::BASE_EDLINES, false);
+    std::vector<Vec4f> lines, filtered, merged;
+    std::vector<int> labels;
+    detector->detect(img, lines);
+    detector->getLastStageOutputs(oriented, filtered, labels, merged);
     ASSERT_EQ(raw.size(), oriented.size());
     int reversed = 0;
     for (size_t k = 0; k < raw.size(); k++)
@@ -177,6 +182,75 @@ TEST(LSDAdvance_BaseDetectors, orientBrighterLeft_turns_only_segments_with_the_b
     EXPECT_EQ(Vec4f(5, 5, 5, 5), segments[2]);  // a point has no side
 }
 
+// A blurred vertical step between columns 99 and 100 (its edge at x = 99.5) and a horizontal one
+// between rows 59 and 60 (y = 59.5).
+Mat drawnEdges()
+{
+    Mat img(200, 200, CV_8UC1, Scalar(30));
+    img.colRange(100, 200).setTo(Scalar(200));
+    img.rowRange(60, 200).colRange(0, 100).setTo(Scalar(120));
+    GaussianBlur(img, img, Size(), 1.0);
+    return img;
+}
+
+// The mean x of the longest nearly vertical segment and the mean y of the longest nearly
+// horizontal one.
+Point2d edgePositions(const std::vector<Vec4f>& segments)
+{
+    double longestV = 0, longestH = 0;
+    Point2d at(-1, -1);
+    for (const Vec4f& s : segments)
+    {
+        const double len = lsda::segmentLength(s), dx = std::abs(s[2] - s[0]), dy = std::abs(s[3] - s[1]);
+        if (dy > 10 * dx && len > longestV && s[0] > 50)
+        {
+            longestV = len;
+            at.x = 0.5 * (s[0] + s[2]);
+        }
+        if (dx > 10 * dy && len > longestH)
+        {
+            longestH = len;
+            at.y = 0.5 * (s[1] + s[3]);
+        }
+    }
+    return at;
+}
+
+TEST(LSDAdvance_BaseDetectors, lsd_bases_at_a_scale_below_1_place_edges_where_they_are)
+{
+    // OpenCV's LSD divides the coordinates of its scaled image by the scale: at scale 0.5 the
+    // edges come 0.5 px too near the origin. Both LSD bases return them on the full image's
+    // pixel centres.
+    const Mat img = drawnEdges();
+    for (double scale : { 1.0, 0.9, 0.8, 0.5 })
+    {
+        SCOPED_TRACE(scale);
+        LSDAdvance::LSDParams lsd;
+        lsd.scale = scale;
+        std::vector<Vec4f> opencv;
+        createLineSegmentDetector(lsd.refine, lsd.scale, lsd.sigmaScale, lsd.quant, lsd.angleTolerance, lsd.logEps,
+                                 lsd.densityThreshold, lsd.numBins)
+            ->detect(img, opencv);
+        const Point2d raw = edgePositions(opencv);
+        EXPECT_NEAR(99.5 - 0.5 * (1 / scale - 1), raw.x, 0.05);  // the offset this corrects
+        EXPECT_NEAR(59.5 - 0.5 * (1 / scale - 1), raw.y, 0.05);
+        for (int base : { (int)LSDAdvance::BASE_LSD, (int)LSDAdvance::BASE_FAST_LSD })
+        {
+            SCOPED_TRACE(baseName(base));
+            std::vector<Vec4f> segments;
+            lsda::createBaseDetector(base, lsd, LSDAdvance::FLDParams(), EdgeDrawing::Params())->detect(img, segments);
+            const Point2d at = edgePositions(segments);
+            EXPECT_NEAR(99.5, at.x, 0.05);
+            EXPECT_NEAR(59.5, at.y, 0.05);
+            if (base == LSDAdvance::BASE_LSD)
+            {
+                lsda::toFullResolution(opencv, scale);
+                EXPECT_EQ(opencv, segments);  // OpenCV's segments, moved
+            }
+        }
+    }
+}
+
 TEST(LSDAdvance_BaseDetectors, fld_and_edlines_bases_return_what_opencv_returns)
 {
     // No re-implementation: with the stages off, the base segments are OpenCV's (EDLines' up to
@@ -186,7 +260,7 @@ TEST(LSDAdvance_BaseDetectors, fld_and_edlines_bases_return_what_opencv_returns)
     std::vector<Vec4f> expected, lines;
     createFastLineDetector()->detect(img, expected);
     onBase(LSDAdvance::BASE_FLD, false)->detect(img, lines);
-    EXPECT_EQ(expected, lines);
+    EXPECT_EQ(asSet(expected), asSet(lines));  // the output is ordered by response
     Ptr<EdgeDrawing> ed = createEdgeDrawing();
     ed->detectEdges(img);
     ed->detectLines(expected);

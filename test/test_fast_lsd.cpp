@@ -158,6 +158,7 @@ Agreement compareWithOpenCV(const std::vector<std::string>& paths, const LSDAdva
             continue;
         std::vector<Vec4f> a, b;
         opencv->detect(img, a);
+        lsda::toFullResolution(a, p.scale);  // as BASE_LSD moves them (both LSD bases do)
         ours->detect(img, b);
         total.opencv += (int)a.size();
         total.ours += (int)b.size();

@@ -455,7 +455,7 @@ TEST(LSDAdvance_InputContract, every_value_at_the_ends_of_each_range_gives_lines
 
 TEST(LSDAdvance_InputContract, factory_rejects_an_unknown_preset_naming_the_presets)
 {
-    for (int preset : { -1, 4, INT_MAX })
+    for (int preset : { -1, (int)LSDAdvance::PRESET_FRONT_END + 1, INT_MAX })
     {
         SCOPED_TRACE(preset);
         try

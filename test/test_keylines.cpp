@@ -165,6 +165,80 @@ TEST(LSDAdvance_KeyLines, every_keyline_gets_an_LBD_descriptor_and_matches_itsel
     EXPECT_GT(identical, (int)count * 9 / 10);
 }
 
+TEST(LSDAdvance_KeyLines, detect_after_the_budget_and_minimum_gives_contiguous_class_ids_strongest_first)
+{
+    const Mat gray = buildingGray();
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    detector->setMaxLines(40);
+    detector->setMinLineLength(30);
+    std::vector<KeyLine> keylines;
+    detector->detect(gray, keylines);
+    ASSERT_EQ(40u, keylines.size());
+    std::vector<float> responses;
+    detector->getLastResponses(responses);
+    for (size_t i = 0; i < keylines.size(); i++)
+    {
+        EXPECT_EQ((int)i, keylines[i].class_id);
+        EXPECT_EQ(responses[i], keylines[i].response);
+        EXPECT_GE(keylines[i].lineLength, 30.f);
+        if (i > 0)
+        {
+            EXPECT_GE(keylines[i - 1].response, keylines[i].response);
+        }
+    }
+    // LBD describes each of them.
+    Mat descriptors;
+    line_descriptor::BinaryDescriptor::createBinaryDescriptor()->compute(gray, keylines, descriptors);
+    EXPECT_EQ(40, descriptors.rows);
+}
+
+TEST(LSDAdvance_KeyLines, keepStrongestKeyLines_cuts_to_the_budget_and_numbers_them_anew)
+{
+    const Mat gray = buildingGray();
+    std::vector<KeyLine> detected;
+    line_descriptor::LSDDetector::createLSDDetector()->detect(gray, detected, 2, 1);  // another detector's order
+    ASSERT_GT(detected.size(), 100u);
+    std::vector<KeyLine> kept;
+    keepStrongestKeyLines(detected, 50, kept);
+    ASSERT_EQ(50u, kept.size());
+    std::vector<float> responses;
+    for (const KeyLine& k : detected)
+        responses.push_back(k.response);
+    std::sort(responses.begin(), responses.end(), std::greater<float>());
+    for (size_t i = 0; i < kept.size(); i++)
+    {
+        EXPECT_EQ((int)i, kept[i].class_id);
+        EXPECT_EQ(responses[i], kept[i].response);
+        // Otherwise the KeyLine it was.
+        const auto same = std::find_if(detected.begin(), detected.end(), [&](const KeyLine& k) {
+            return k.startPointX == kept[i].startPointX && k.startPointY == kept[i].startPointY &&
+                   k.endPointX == kept[i].endPointX && k.endPointY == kept[i].endPointY && k.response == kept[i].response;
+        });
+        ASSERT_TRUE(same != detected.end());
+        KeyLine renumbered = *same;
+        renumbered.class_id = (int)i;
+        expectSameKeyLine(renumbered, kept[i], i);
+    }
+    Mat descriptors;
+    line_descriptor::BinaryDescriptor::createBinaryDescriptor()->compute(gray, kept, descriptors);
+    EXPECT_EQ(50, descriptors.rows);
+
+    // In place, 0 = all (sorted only), a budget above the count, a bad budget.
+    std::vector<KeyLine> all = detected;
+    keepStrongestKeyLines(all, 0, all);
+    ASSERT_EQ(detected.size(), all.size());
+    for (size_t i = 0; i < all.size(); i++)
+    {
+        EXPECT_EQ((int)i, all[i].class_id);
+        EXPECT_EQ(responses[i], all[i].response);
+    }
+    keepStrongestKeyLines(detected, (int)detected.size() + 5, kept);
+    EXPECT_EQ(detected.size(), kept.size());
+    EXPECT_THROW(keepStrongestKeyLines(detected, -1, kept), cv::Exception);
+    keepStrongestKeyLines(std::vector<KeyLine>(), 10, kept);
+    EXPECT_TRUE(kept.empty());
+}
+
 }} // namespace
 
 #endif

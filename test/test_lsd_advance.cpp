@@ -249,7 +249,7 @@ TEST(LSDAdvance_Detect, merge_none_returns_the_filtered_base_segments)
     const std::vector<Vec4f> lines = detectLines(detector, img);
     std::vector<Vec4f> kept;
     lsda::keepLongOrStrong(detectBase(img), std::vector<float>(), detector->getLastStats().minLength, 0.0, kept);
-    EXPECT_EQ(kept, lines);
+    EXPECT_EQ(asSet(kept), asSet(lines));  // the output is ordered by response
     EXPECT_EQ(0, detector->getLastStats().mergeGroups);
 }
 
@@ -260,12 +260,12 @@ TEST(LSDAdvance_Detect, processSegments_runs_the_stages_on_given_segments)
     Ptr<LSDAdvance> fromImage = createLSDAdvance(), fromSegments = createLSDAdvance();
     std::vector<Vec4f> expected = detectLines(fromImage, img), lines;
     fromSegments->processSegments(base, lines, img.size());
-    EXPECT_EQ(expected, lines);
+    EXPECT_EQ(asSet(expected), asSet(lines));  // ordered by length, not by response
     // Without the image there are no responses: with keepStrongSegments too, stage 1 keeps long
     // segments only, where detect() also keeps short strong ones.
     fromSegments->setKeepStrongSegments(true);
     fromSegments->processSegments(base, lines, img.size());
-    EXPECT_EQ(expected, lines);
+    EXPECT_EQ(asSet(expected), asSet(lines));
     fromImage->setKeepStrongSegments(true);
     EXPECT_LT(lines.size(), detectLines(fromImage, img).size());
     EXPECT_EQ((int)base.size(), fromSegments->getLastStats().baseSegments);

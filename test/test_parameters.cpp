@@ -362,6 +362,9 @@ TEST(LSDAdvance_Parameters, every_own_parameter_changes_the_output)
         { "proximityRatio", 0.1, nullptr, 0 },
         { "mergeThreshold", 1.0, nullptr, 0 },
         { "maxPerpendicularOffset", 4.0, nullptr, 0 },
+        { "minLineLength", 60.0, nullptr, 0 },
+        { "minLineLengthRatio", 0.125, nullptr, 0 },
+        { "maxLines", 20, nullptr, 0 },
     };
     expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base < 0; },
                                         [](const ParameterAccess&) { return createLSDAdvance(); });

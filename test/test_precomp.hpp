@@ -26,6 +26,16 @@ inline double undirectedAngle(const Vec4f& s)
     return a < 0 ? a + 180.0 : (a >= 180.0 ? a - 180.0 : a);
 }
 
+//! Segments sorted by their coordinates: the set of lines, to compare outputs whose order differs
+//! (detect() orders by response, processSegments() by length).
+inline std::vector<Vec4f> asSet(std::vector<Vec4f> lines)
+{
+    std::sort(lines.begin(), lines.end(), [](const Vec4f& a, const Vec4f& b) {
+        return std::lexicographical_compare(a.val, a.val + 4, b.val, b.val + 4);
+    });
+    return lines;
+}
+
 //! A segment of the given length starting at (x, y) with the given directed angle (degrees).
 inline Vec4f segmentAt(double x, double y, double angleDeg, double length)
 {

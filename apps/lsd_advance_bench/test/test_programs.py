@@ -355,7 +355,7 @@ def test_front_end_on_kitti_keeps_at_most_the_budget_and_matches_at_most_its_lin
 
 METHOD_FILES = sorted(f[:-4] for f in os.listdir(METHODS) if f.endswith(".yml"))
 PRESET_FILES = {"lsdadvance": "MOST_ACCURATE", "lsdadvance_fastest": "FASTEST", "lsdadvance_paper": "PAPER",
-                "lsdadvance_sequence": "SEQUENCE"}
+                "lsdadvance_sequence": "SEQUENCE", "lsdadvance_front_end": "FRONT_END"}
 
 
 def test_the_presets_and_the_variants_of_the_tables_have_method_files():

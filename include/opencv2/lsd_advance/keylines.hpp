@@ -54,13 +54,28 @@ width - 1 (height - 1); then `startPoint*` and
 `sPointInOctave*` are the first endpoint, `endPoint*` and `ePointInOctave*` the second, `pt` the
 midpoint, `lineLength` the length in pixels, `angle` = atan2(dy, dx) in radians in (-pi, pi],
 `size` = dx * dy (LSDDetector's definition, signed), `numOfPixels` the number of pixels of the
-8-connected digital line between the endpoints, `octave` 0, `class_id` the index of the segment,
+8-connected digital line between the endpoints, `octave` 0, `class_id` the index of the segment
+(0..N-1, contiguous: LBD needs it; keepStrongestKeyLines() keeps it so),
 and `response` = lineLength / max(width, height), in [0, sqrt(2)], as LSDDetector sets it (the
 length alone: these are lines without their image; LSDAdvance::detect(image, keylines) sets
 computeLineResponses()'s instead).
 */
 CV_EXPORTS_W void linesToKeyLines(InputArray lines, Size imageSize,
                                   CV_OUT std::vector<line_descriptor::KeyLine>& keylines);
+
+/** @brief Keeps a front end's budget of KeyLines: the strongest first, numbered anew.
+
+@param keylines KeyLines (of LSDAdvance::detect(image, keylines), linesToKeyLines() or any
+detector), whatever their order and class_id.
+@param maxLines The budget: the number of KeyLines kept, 0 for all (then only sorted).
+@param kept Output: the maxLines KeyLines of highest `response` (all when fewer), by decreasing
+response (equal responses in their order in keylines), otherwise unchanged but for `class_id`,
+which is their index 0..N-1: the numbering LBD (BinaryDescriptor::compute) and its matcher expect
+of a KeyLine vector. May be keylines itself.
+Throws cv::Exception on a negative maxLines.
+*/
+CV_EXPORTS_W void keepStrongestKeyLines(const std::vector<line_descriptor::KeyLine>& keylines, int maxLines,
+                                        CV_OUT std::vector<line_descriptor::KeyLine>& kept);
 
 /** @brief Converts KeyLines back to segments.
 

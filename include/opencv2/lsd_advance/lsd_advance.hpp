@@ -7,11 +7,20 @@
 
 #include "opencv2/core.hpp"
 #include "opencv2/ximgproc/edge_drawing.hpp"  // EdgeDrawing::Params: the parameters of BASE_EDLINES
-#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
-#include "opencv2/line_descriptor.hpp"
-#endif
+
+#include <vector>
 
 namespace cv {
+
+//! @cond IGNORED
+// LSDAdvance::detect(InputArray, std::vector<KeyLine>&) names KeyLine only: this header does not
+// include line_descriptor (opencv2/lsd_advance/keylines.hpp does), so that it compiles with or
+// without it, before or after a client's own copy of it.
+namespace line_descriptor {
+struct KeyLine;
+}
+//! @endcond
+
 namespace ximgproc {
 
 //! @addtogroup lsd_advance
@@ -23,14 +32,15 @@ struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
 {
     CV_WRAP LSDAdvanceStats()
         : baseSegments(0), mergedSegments(0), filteredSegments(0), mergeGroups(0), outputSegments(0),
-          minLength(0), minResponse(0), alpha(1), baseMs(0), filterMs(0), groupingMs(0), mergingMs(0)
+          minLength(0), minResponse(0), alpha(1), baseMs(0), filterMs(0), groupingMs(0), mergingMs(0),
+          selectionMs(0), frameInSequence(0)
     {}
 
     CV_PROP_RW int baseSegments;     //!< segments returned by the base detector (stage 0)
     CV_PROP_RW int mergedSegments;   //!< segments after merging (stage 3)
     CV_PROP_RW int filteredSegments; //!< segments that survived the length filter (stage 1)
     CV_PROP_RW int mergeGroups;      //!< endpoint groups holding two or more segments (stage 2)
-    CV_PROP_RW int outputSegments;   //!< segments returned (after clipping to the image)
+    CV_PROP_RW int outputSegments;   //!< segments returned (after clipping to the image and the selection: Params::minLineLength, Params::minLineLengthRatio, Params::maxLines)
     CV_PROP_RW double minLength;     //!< length threshold of stage 1, in pixels (0 when the filter is off)
     CV_PROP_RW double minResponse;   //!< response threshold of stage 1's strong segments (0 unless Params::keepStrongSegments acts)
     CV_PROP_RW double alpha;         //!< inter-frame factor used by stage 1, in [0.8, 1.2] (1 when the filter is off)
@@ -38,6 +48,11 @@ struct CV_EXPORTS_W_SIMPLE LSDAdvanceStats
     CV_PROP_RW double filterMs;      //!< time of stage 1, ms
     CV_PROP_RW double groupingMs;    //!< time of stage 2, ms
     CV_PROP_RW double mergingMs;     //!< time of stage 3, ms
+    CV_PROP_RW double selectionMs;   //!< time of the selection (minimum length, responses, order, budget), ms
+    /** frames of the current sequence before this call: 0 on the first call after createLSDAdvance(),
+    reset(), read() or a setter, then 1, 2, ... An inter-frame LengthFilterMode (PRESET_SEQUENCE) acts
+    from frame 2 on: a detector made anew for each frame always reports 0 and never leaves alpha = 1. */
+    CV_PROP_RW int frameInSequence;
 };
 
 /** @brief Line segment detector that returns fewer, longer segments than LSD (@cite Guan2026).
@@ -69,8 +84,20 @@ received and the accepted ones. A rejected call (image, segments, setter, read()
 __Output.__ N x 1 CV_32FC4 (std::vector<cv::Vec4f>), finite, inside the image: a segment reaching
 past it is clipped along its own line, keeping its direction, and dropped when nothing is left.
 
+__Order and selection.__ detect() returns its lines strongest first: by decreasing response
+(computeLineResponses(), the KeyLine::response of detect(InputArray, std::vector<KeyLine>&); equal
+responses keep the stages' order). processSegments(), which has no image, returns them longest
+first. After the clipping, lines shorter than the larger of Params::minLineLength and
+Params::minLineLengthRatio times min(W, H) are dropped, then the first Params::maxLines are kept:
+a front end's budget of its best lines (all three off by default, where the lines are the same set
+as without them). The responses are computed only when something uses them: detect() always does
+(it orders by them; getLastResponses() returns them), after the minimum length, on the lines that
+pass it; processSegments() never.
+
 __State.__ By default detect() is stateless, like LSD. The inter-frame modes of LengthFilterMode
-(PRESET_SEQUENCE) make consecutive calls a sequence; reset() and every setter start a new one.
+(PRESET_SEQUENCE) make consecutive calls a sequence; reset() and every setter start a new one. A
+sequence lives in one detector object: create it once and call it on every frame
+(LSDAdvanceStats::frameInSequence counts the frames it has seen).
 
 __Threads.__ Separate instances may run on separate threads at once; results do not depend on
 cv::setNumThreads. One instance must not be used from two threads at once.
@@ -149,7 +176,13 @@ public:
         /** the paper's: OpenCV's LSD set-up (LSD_REFINE_STD, scale 0.8), LENGTH_THRESHOLD_PAPER,
         LENGTH_FILTER_INTERFRAME, FILTER_THEN_MERGE, MERGE_BASELINES, proximityRatio 0.1 */
         PRESET_PAPER = 2,
-        PRESET_SEQUENCE = 3 //!< video, SLAM: PRESET_MOST_ACCURATE with LENGTH_FILTER_COUNT_TRACKING and keepStrongSegments
+        /** video, SLAM: PRESET_MOST_ACCURATE with LENGTH_FILTER_COUNT_TRACKING and keepStrongSegments.
+        Its state is the sequence: one detector object kept across the frames (see "State"). */
+        PRESET_SEQUENCE = 3,
+        /** a point-line SLAM front end that keeps a budget of lines for LBD: PRESET_MOST_ACCURATE with
+        the base at LSDParams::scale 0.9, Params::minLineLengthRatio 0.125 and Params::maxLines 60
+        (the strongest 60 lines of at least 0.125 min(W, H)). Stateless, unlike PRESET_SEQUENCE. */
+        PRESET_FRONT_END = 4
     };
 
     /** @brief LSDAdvance's own parameters (those of stages 1-3 and the choice of base). */
@@ -173,6 +206,9 @@ public:
         CV_PROP_RW double proximityRatio;       //!< segments farther apart than this times their mean length never fuse, in (0, 10]. Default 1.
         CV_PROP_RW double mergeThreshold;       //!< score a segment needs to fuse into a longer one, in [0, 1]. Default 0.6.
         CV_PROP_RW double maxPerpendicularOffset; //!< both endpoints must lie this close to the longer one's line, pixels, in [0, 100]. Default 1.5.
+        CV_PROP_RW double minLineLength;        //!< selection: lines shorter than this are dropped (0: off), pixels, in [0, 100000]. Default 0.
+        CV_PROP_RW double minLineLengthRatio;   //!< selection: lines shorter than this times min(W, H) are dropped (0: off; with minLineLength too, the larger threshold applies; not used by processSegments without imageSize), in [0, 1]. Default 0.
+        CV_PROP_RW int maxLines;                //!< selection: the line budget, the first maxLines lines of the order (detect: strongest first) are kept, in 0 (all) or [1, 100000]. Default 0.
     };
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
@@ -183,7 +219,7 @@ public:
     {
         CV_WRAP LSDParams(); //!< the defaults (OpenCV's LSD uses LSD_REFINE_STD at scale 0.8)
         CV_PROP_RW int refine;              //!< one of cv::LineSegmentDetectorModes. Default LSD_REFINE_NONE.
-        CV_PROP_RW double scale;            //!< scale at which the image is read, in (0, 1]. Default 1.
+        CV_PROP_RW double scale;            //!< scale at which the image is read; the segments are returned in the full image's coordinates (pixel centres, see "Coordinates": unlike OpenCV's LSD below scale 1), in (0, 1]. Default 1.
         CV_PROP_RW double sigmaScale;       //!< Gaussian sigma = sigmaScale / scale, used when scale < 1, in (0, 100]. Default 0.6.
         CV_PROP_RW double fullScaleSigma;   //!< sigma of a Gaussian applied at scale 1 (at scale < 1 the one of sigmaScale smooths), pixels: more of the gradients of staircase edges (lines drawn without anti-aliasing, rendered frames) then agree within angleTolerance; 0 reads the image as the LSD algorithm does, in [0, 3]. Default 0.5.
         CV_PROP_RW double quant;            //!< bound to the gradient quantization error, gray levels, in [0, 255]. Default 2.
@@ -216,17 +252,21 @@ public:
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     /** @brief Detects line segments as KeyLines for line_descriptor's LBD (@cite LBD).
+    Include opencv2/lsd_advance/keylines.hpp (or opencv2/lsd_advance.hpp) to call it: this header
+    only names KeyLine.
     @param image As for detect(InputArray, OutputArray).
-    @param keylines Output: one KeyLine per segment detect() returns, in the same order, filled by
-    linesToKeyLines() as cv::line_descriptor::LSDDetector fills octave 0, except `response`:
-    computeLineResponses()'s, the length weighted by the squared contrast. Sort by it, largest
-    first, to keep a front end's N best lines. In Python: detectKeyLines(image) -> keylines. */
+    @param keylines Output: one KeyLine per segment detect() returns, in the same order (strongest
+    first, after the minimum length and the budget), filled by linesToKeyLines() as
+    cv::line_descriptor::LSDDetector fills octave 0 (`class_id` 0..N-1), except `response`:
+    getLastResponses()' (computeLineResponses()), the length weighted by the squared contrast.
+    keepStrongestKeyLines() cuts them to a smaller budget. In Python: detectKeyLines(image) -> keylines. */
     CV_WRAP_AS(detectKeyLines) void detect(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines);
 #endif
 
     /** @brief Runs stages 1-3 on segments from any detector; the call is a frame like detect().
     @param segments N x 1 or 1 x N CV_32FC4, finite, within [-1e7, 1e7) px, oriented as LSD's.
-    @param lines Output like detect().
+    @param lines Output like detect(), longest first (there is no image to compute responses on),
+    after Params::minLineLength, Params::minLineLengthRatio (with imageSize only) and Params::maxLines.
     @param imageSize When not empty, the lines are clipped to this image as detect() clips them;
     when empty (default), not clipped (a fused segment may reach a little beyond its pieces). */
     CV_WRAP virtual void processSegments(InputArray segments, OutputArray lines, Size imageSize = Size()) = 0;
@@ -242,6 +282,11 @@ public:
     /** @brief Returns the statistics of the last call.
     @return Those of the last call that succeeded (zeros, alpha 1, before the first). */
     CV_WRAP virtual LSDAdvanceStats getLastStats() const = 0;
+
+    /** @brief Returns the responses of the lines of the last call.
+    @param responses Output N x 1 CV_32FC1, computeLineResponses() of each line the last detect()
+    returned, in its order (decreasing); empty after processSegments() and before the first call. */
+    CV_WRAP virtual void getLastResponses(OutputArray responses) const = 0;
 
     /** @brief Returns the segments after each stage of the last call, before the clipping.
     @param baseSegments Output CV_32FC4: the base detector's segments (processSegments' input).
@@ -310,6 +355,12 @@ public:
     CV_WRAP virtual double getMergeThreshold() const = 0;              //!< @brief Returns Params::mergeThreshold. @return The value.
     CV_WRAP virtual void setMaxPerpendicularOffset(double pixels) = 0; //!< @brief Sets Params::maxPerpendicularOffset. @param pixels The new value.
     CV_WRAP virtual double getMaxPerpendicularOffset() const = 0;      //!< @brief Returns Params::maxPerpendicularOffset. @return The value.
+    CV_WRAP virtual void setMinLineLength(double pixels) = 0;          //!< @brief Sets Params::minLineLength. @param pixels The new value.
+    CV_WRAP virtual double getMinLineLength() const = 0;               //!< @brief Returns Params::minLineLength. @return The value.
+    CV_WRAP virtual void setMinLineLengthRatio(double ratio) = 0;      //!< @brief Sets Params::minLineLengthRatio. @param ratio The new value.
+    CV_WRAP virtual double getMinLineLengthRatio() const = 0;          //!< @brief Returns Params::minLineLengthRatio. @return The value.
+    CV_WRAP virtual void setMaxLines(int lines) = 0;                   //!< @brief Sets Params::maxLines. @param lines The new value.
+    CV_WRAP virtual int getMaxLines() const = 0;                       //!< @brief Returns Params::maxLines. @return The value.
 };
 
 /** @brief Creates an LSDAdvance detector.

@@ -67,7 +67,7 @@ def other_values(name):
     elif isinstance(value, int):
         candidates = [value + 1, value - 1, value * 2, value // 2, value + 2, 0, 1, 2, 3, 4, 10, 20, 40]
     else:
-        candidates = [value * 0.5, value * 0.9, value * 1.1, value * 2, value + 1, value - 1, 0.3, 3.0]
+        candidates = [value * 0.5, value * 0.9, value * 1.1, value * 2, value + 1, value - 1, 0.3, 3.0, 10.0]
     accepted = []
     for v in candidates:
         if v == value or v in accepted:
@@ -84,11 +84,19 @@ def set_up_for(detector, name):
     """What a parameter that acts only in another configuration needs first."""
     if name == "baselineRatio":
         detector.setMergeStrategy(api.LSDAdvance_MERGE_BASELINES)
+    if name == "minLineLength":  # the lengths the values tried (up to 10 px) drop: the base's shortest
+        detector.setLengthFilterMode(api.LSDAdvance_LENGTH_FILTER_NONE)
 
 
 def as_lines(lines):
     """detect()'s result as an (N, 1, 4) array, N = 0 for None."""
     return np.zeros((0, 1, 4), np.float32) if lines is None else lines
+
+
+def as_set(lines):
+    """Lines as a sorted list of (x1, y1, x2, y2): detect() orders them by response, processSegments()
+    (without an image) by length."""
+    return sorted(map(tuple, as_lines(lines).reshape(-1, 4).tolist()))
 
 
 def header_text():
@@ -196,8 +204,8 @@ class lsd_advance_test(NewOpenCVTests):
         lines = detector.detect(building)
         self.assertEqual(detector.getLastStats().baseSegments, len(base))
         size = (building.shape[1], building.shape[0])
-        self.assertTrue(np.array_equal(detector.processSegments(base, None, size), lines))
-        self.assertTrue(np.array_equal(detector.processSegments(base, imageSize=size), lines))
+        self.assertEqual(as_set(detector.processSegments(base, None, size)), as_set(lines))
+        self.assertEqual(as_set(detector.processSegments(base, imageSize=size)), as_set(lines))
 
     def test_computeLineResponses_is_length_times_squared_contrast_of_the_brighter_left(self):
         # A step of 150 gray levels under a 120 px segment pointing up (bright side on its left).
@@ -557,8 +565,9 @@ class lsd_advance_test(NewOpenCVTests):
         unstaged = api.createLSDAdvance()
         unstaged.setLengthFilterMode(api.LSDAdvance_LENGTH_FILTER_NONE)
         unstaged.setMergeStrategy(api.LSDAdvance_MERGE_NONE)
-        self.assertTrue(np.array_equal(unstaged.processSegments(filtered, None, (small.shape[1], small.shape[0])),
-                                       lines))
+        # The same set of lines: detect() orders them strongest first, processSegments() longest first.
+        again = unstaged.processSegments(filtered, None, (small.shape[1], small.shape[0]))
+        self.assertEqual(as_set(again), as_set(lines))
 
     def test_lines_lie_inside_the_image(self):
         building = self.building()
@@ -602,7 +611,76 @@ class lsd_advance_test(NewOpenCVTests):
         self.assertTrue(np.array_equal(detector.detect(building), fresh))
 
     # ----------------------------------------------------------------------------------------
+    # The selection: order, minimum length, budget; the front-end preset
+
+    def test_detect_returns_the_lines_strongest_first_and_getLastResponses_their_responses(self):
+        small = self.small_building()
+        detector = api.createLSDAdvance()
+        self.assertIsNone(detector.getLastResponses())
+        lines = detector.detect(small)
+        responses = detector.getLastResponses()
+        self.assertEqual(responses.shape, (len(lines), 1))
+        self.assertEqual(responses.dtype, np.float32)
+        self.assertTrue(np.array_equal(responses, api.computeLineResponses(small, lines)))
+        self.assertTrue(np.all(np.diff(responses.ravel()) <= 0))
+        segments = random_segments(30, 5)
+        detector.processSegments(segments)
+        self.assertIsNone(detector.getLastResponses())
+
+    def test_minimum_length_and_budget_select_from_the_ordered_lines(self):
+        small = self.small_building()
+        every = api.createLSDAdvance().detect(small).reshape(-1, 4)
+        length = np.hypot(every[:, 2] - every[:, 0], every[:, 3] - every[:, 1])
+        detector = api.createLSDAdvance()
+        detector.setMinLineLength(30.0)
+        self.assertTrue(np.array_equal(detector.detect(small).reshape(-1, 4), every[length >= 30]))
+        detector.setMinLineLength(0.0)
+        detector.setMinLineLengthRatio(0.125)
+        side = min(small.shape)
+        self.assertTrue(np.array_equal(detector.detect(small).reshape(-1, 4), every[length >= 0.125 * side]))
+        detector.setMinLineLengthRatio(0.0)
+        detector.setMaxLines(25)
+        self.assertTrue(np.array_equal(detector.detect(small).reshape(-1, 4), every[:25]))
+        self.assertEqual(detector.getLastStats().outputSegments, 25)
+        with self.assertRaisesRegex(cv.error, "maxLines"):
+            detector.setMaxLines(-1)
+        self.assertEqual(detector.getMaxLines(), 25)
+
+    def test_processSegments_returns_the_lines_longest_first(self):
+        detector = api.createLSDAdvance()
+        detector.setLengthFilterMode(api.LSDAdvance_LENGTH_FILTER_NONE)
+        detector.setMergeStrategy(api.LSDAdvance_MERGE_NONE)
+        lines = detector.processSegments(random_segments(40, 3)).reshape(-1, 4)
+        length = np.hypot(lines[:, 2] - lines[:, 0], lines[:, 3] - lines[:, 1])
+        self.assertTrue(np.all(np.diff(length) <= 1e-4))
+
+    def test_front_end_preset_is_stateless_with_a_budget_of_60_long_lines(self):
+        building = self.building()
+        detector = api.createLSDAdvance(api.LSDAdvance_PRESET_FRONT_END)
+        self.assertEqual(detector.getMaxLines(), 60)
+        self.assertEqual(detector.getMinLineLengthRatio(), 0.125)
+        self.assertEqual(detector.getLSDParams().scale, 0.9)
+        lines = detector.detect(building)
+        self.assertEqual(len(lines), 60)
+        self.assertTrue(np.array_equal(detector.detect(building), lines))
+        self.assertEqual(detector.getLastStats().frameInSequence, 1)
+
+    # ----------------------------------------------------------------------------------------
     # KeyLines and LBD (cv2.line_descriptor)
+
+    def test_keepStrongestKeyLines_keeps_the_budget_strongest_first_with_contiguous_class_ids(self):
+        small = self.small_building()
+        keylines = cv.line_descriptor.LSDDetector_createLSDDetector().detect(small, 1, 1)
+        self.assertGreater(len(keylines), 40)
+        kept = api.keepStrongestKeyLines(keylines, 40)
+        self.assertEqual([k.class_id for k in kept], list(range(40)))
+        self.assertEqual([k.response for k in kept], sorted((k.response for k in keylines), reverse=True)[:40])
+        detector = api.createLSDAdvance()
+        detector.setMaxLines(30)
+        ours = detector.detectKeyLines(small)
+        self.assertEqual([k.class_id for k in ours], list(range(30)))
+        description = cv.line_descriptor.BinaryDescriptor_createBinaryDescriptor().compute(small, kept)[1]
+        self.assertEqual(description.shape, (40, 32))
 
     def test_linesToKeyLines_fills_the_documented_fields(self):
         building = self.building()

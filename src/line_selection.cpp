@@ -1,0 +1,61 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// After the clipping: what a front end keeps of the lines. A minimum length, an order that means
+// something (strongest first with an image, longest first without), and a budget of the first N.
+
+#include "precomp.hpp"
+
+namespace cv {
+namespace ximgproc {
+namespace lsda {
+
+double selectionMinLength(const SelectionParams& params, Size imageSize)
+{
+    const double relative = imageSize.empty() ? 0.0 : params.minLineLengthRatio * std::min(imageSize.width, imageSize.height);
+    return std::max(params.minLineLength, relative);
+}
+
+void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<int>& order)
+{
+    CV_Assert(maxLines >= 0);
+    const auto stronger = [&](int a, int b) { return keys[a] > keys[b] || (keys[a] == keys[b] && a < b); };
+    const size_t kept = maxLines > 0 ? std::min(order.size(), (size_t)maxLines) : order.size();
+    // A budget needs only its first lines in order.
+    std::partial_sort(order.begin(), order.begin() + kept, order.end(), stronger);
+    order.resize(kept);
+}
+
+void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, double minLength, int maxLines,
+                          std::vector<Vec4f>& selected, std::vector<float>& responses, std::vector<int>& keptFrom)
+{
+    keepLongOrStrong(lines, std::vector<float>(), minLength, 0.0, longEnough, &longFrom);
+    // The responses of the lines that passed the minimum length only: with an image they are the
+    // order, and the caller's (getLastResponses, KeyLine::response).
+    if (gray)
+        lineResponses(*gray, longEnough, keys);
+    else
+    {
+        keys.resize(longEnough.size());
+        for (size_t i = 0; i < longEnough.size(); i++)
+            keys[i] = (float)segmentLength(longEnough[i]);
+    }
+    order.resize(longEnough.size());
+    for (size_t i = 0; i < order.size(); i++)
+        order[i] = (int)i;
+    strongestFirst(keys, maxLines, order);
+
+    selected.resize(order.size());
+    keptFrom.resize(order.size());
+    responses.resize(gray ? order.size() : 0);
+    for (size_t j = 0; j < order.size(); j++)
+    {
+        selected[j] = longEnough[order[j]];
+        keptFrom[j] = longFrom[order[j]];
+        if (gray)
+            responses[j] = keys[order[j]];
+    }
+}
+
+}}} // namespace cv::ximgproc::lsda

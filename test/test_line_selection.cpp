@@ -1,0 +1,265 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The selection after the clipping: the order of the output (strongest first in detect, longest
+// first in processSegments), the minimum length and the budget, the responses of the last call,
+// the frame count of a sequence, and the front-end preset.
+
+#include "test_precomp.hpp"
+#include "../src/parameters.hpp"
+
+namespace opencv_test { namespace {
+
+Mat building()
+{
+    const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
+    CV_Assert(!img.empty());
+    return img;
+}
+
+std::vector<Vec4f> longerThan(const std::vector<Vec4f>& lines, double minLength)
+{
+    std::vector<Vec4f> kept;
+    for (const Vec4f& l : lines)
+        if (lsda::segmentLength(l) >= minLength)
+            kept.push_back(l);
+    return kept;
+}
+
+TEST(LSDAdvance_Selection, min_length_is_the_larger_of_the_two_and_the_ratio_needs_the_image_size)
+{
+    LSDAdvance::Params p;
+    EXPECT_EQ(0.0, lsda::selectionMinLength(lsda::SelectionParams(p), Size(640, 480)));
+    p.minLineLength = 30;
+    EXPECT_EQ(30.0, lsda::selectionMinLength(lsda::SelectionParams(p), Size(640, 480)));
+    p.minLineLengthRatio = 0.125;  // 60 px of min(640, 480)
+    EXPECT_EQ(60.0, lsda::selectionMinLength(lsda::SelectionParams(p), Size(640, 480)));
+    EXPECT_EQ(30.0, lsda::selectionMinLength(lsda::SelectionParams(p), Size(640, 200)));
+    EXPECT_EQ(30.0, lsda::selectionMinLength(lsda::SelectionParams(p), Size()));
+}
+
+TEST(LSDAdvance_Selection, strongestFirst_orders_by_decreasing_key_ties_by_index_and_cuts_to_the_budget)
+{
+    const std::vector<float> keys = { 0.5f, 2.f, 0.5f, 3.f, 1.f };
+    std::vector<int> order = { 0, 1, 2, 3, 4 };
+    lsda::strongestFirst(keys, 0, order);
+    EXPECT_EQ(std::vector<int>({ 3, 1, 4, 0, 2 }), order);
+    order = { 0, 1, 2, 3, 4 };
+    lsda::strongestFirst(keys, 2, order);
+    EXPECT_EQ(std::vector<int>({ 3, 1 }), order);
+    order = { 4, 2, 0 };  // a subset, in any order
+    lsda::strongestFirst(keys, 10, order);
+    EXPECT_EQ(std::vector<int>({ 4, 0, 2 }), order);
+}
+
+TEST(LSDAdvance_Selection, detect_returns_the_lines_strongest_first_with_their_responses)
+{
+    const Mat img = building();
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<float> none;
+    detector->getLastResponses(none);
+    EXPECT_TRUE(none.empty());
+    std::vector<Vec4f> lines;
+    detector->detect(img, lines);
+    ASSERT_GT(lines.size(), 50u);
+    std::vector<float> responses, expected;
+    detector->getLastResponses(responses);
+    computeLineResponses(img, lines, expected);
+    ASSERT_EQ(lines.size(), responses.size());
+    for (size_t i = 0; i < lines.size(); i++)
+    {
+        EXPECT_EQ(expected[i], responses[i]) << i;
+        if (i > 0)
+        {
+            EXPECT_GE(responses[i - 1], responses[i]) << i;
+        }
+    }
+    EXPECT_GT(responses.front(), responses.back());
+}
+
+TEST(LSDAdvance_Selection, by_default_the_lines_are_the_set_of_the_stages_output)
+{
+    // The selection off (the defaults) only orders: the set is the clipped output of the stages.
+    const Mat img = building();
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    std::vector<Vec4f> lines, base, filtered, merged, clipped;
+    std::vector<int> labels, keptFrom;
+    detector->detect(img, lines);
+    detector->getLastStageOutputs(base, filtered, labels, merged);
+    lsda::clipToImage(filtered, img.size(), clipped, keptFrom);  // MERGE_THEN_FILTER: the filter is last
+    EXPECT_NE(clipped, lines);  // ordered otherwise
+    EXPECT_EQ(asSet(clipped), asSet(lines));
+}
+
+TEST(LSDAdvance_Selection, minimum_length_drops_exactly_the_shorter_lines)
+{
+    const Mat img = building();
+    std::vector<Vec4f> all;
+    createLSDAdvance()->detect(img, all);
+
+    Ptr<LSDAdvance> absolute = createLSDAdvance();
+    absolute->setMinLineLength(40);
+    std::vector<Vec4f> lines;
+    absolute->detect(img, lines);
+    EXPECT_LT(lines.size(), all.size());
+    EXPECT_EQ(longerThan(all, 40), lines);  // the same order, fewer lines
+    EXPECT_EQ((int)lines.size(), absolute->getLastStats().outputSegments);
+
+    const double side = std::min(img.cols, img.rows);
+    Ptr<LSDAdvance> relative = createLSDAdvance();
+    relative->setMinLineLengthRatio(0.125);
+    relative->detect(img, lines);
+    EXPECT_EQ(longerThan(all, 0.125 * side), lines);
+
+    // Both: the larger threshold.
+    relative->setMinLineLength(100);
+    relative->detect(img, lines);
+    EXPECT_EQ(longerThan(all, 100), lines);
+    relative->setMinLineLength(10);
+    relative->detect(img, lines);
+    EXPECT_EQ(longerThan(all, 0.125 * side), lines);
+}
+
+TEST(LSDAdvance_Selection, budget_keeps_the_strongest_lines)
+{
+    const Mat img = building();
+    std::vector<Vec4f> all;
+    std::vector<float> allResponses;
+    Ptr<LSDAdvance> reference = createLSDAdvance();
+    reference->detect(img, all);
+    reference->getLastResponses(allResponses);
+    ASSERT_GT(all.size(), 60u);
+
+    Ptr<LSDAdvance> budget = createLSDAdvance();
+    budget->setMaxLines(60);
+    std::vector<Vec4f> lines;
+    std::vector<float> responses;
+    budget->detect(img, lines);
+    budget->getLastResponses(responses);
+    EXPECT_EQ(std::vector<Vec4f>(all.begin(), all.begin() + 60), lines);
+    EXPECT_EQ(std::vector<float>(allResponses.begin(), allResponses.begin() + 60), responses);
+    std::vector<std::vector<int> > sources;
+    budget->getLastSources(sources);
+    EXPECT_EQ(60u, sources.size());
+
+    // A budget larger than the lines keeps them all; with a minimum length, the strongest long ones.
+    budget->setMaxLines((int)all.size() + 10);
+    budget->detect(img, lines);
+    EXPECT_EQ(all, lines);
+    budget->setMaxLines(20);
+    budget->setMinLineLength(60);
+    budget->detect(img, lines);
+    const std::vector<Vec4f> longOnes = longerThan(all, 60);
+    ASSERT_GT(longOnes.size(), 20u);
+    EXPECT_EQ(std::vector<Vec4f>(longOnes.begin(), longOnes.begin() + 20), lines);
+}
+
+TEST(LSDAdvance_Selection, processSegments_returns_the_lines_longest_first_without_responses)
+{
+    const std::vector<Vec4f> segments = { segmentAt(10, 10, 0, 20), segmentAt(10, 50, 0, 80), segmentAt(10, 90, 0, 50),
+                                          segmentAt(200, 10, 90, 35) };
+    Ptr<LSDAdvance> detector = createLSDAdvanceWith(LSDAdvance::LENGTH_FILTER_NONE);
+    std::vector<Vec4f> lines;
+    detector->processSegments(segments, lines);
+    EXPECT_EQ(std::vector<Vec4f>({ segments[1], segments[2], segments[3], segments[0] }), lines);
+    std::vector<float> responses;
+    detector->getLastResponses(responses);
+    EXPECT_TRUE(responses.empty());
+
+    // The ratio needs imageSize; the budget applies either way.
+    detector->setMinLineLengthRatio(0.25);
+    detector->setMaxLines(2);
+    detector->processSegments(segments, lines);
+    EXPECT_EQ(std::vector<Vec4f>({ segments[1], segments[2] }), lines);
+    detector->processSegments(segments, lines, Size(400, 160));  // 40 px
+    EXPECT_EQ(std::vector<Vec4f>({ segments[1], segments[2] }), lines);
+    detector->setMaxLines(0);
+    detector->processSegments(segments, lines, Size(400, 160));
+    EXPECT_EQ(std::vector<Vec4f>({ segments[1], segments[2] }), lines);
+    detector->setMinLineLengthRatio(0);
+    detector->setMinLineLength(30);
+    detector->processSegments(segments, lines);
+    EXPECT_EQ(std::vector<Vec4f>({ segments[1], segments[2], segments[3] }), lines);
+}
+
+TEST(LSDAdvance_Selection, parameters_reject_values_out_of_range_naming_them)
+{
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    EXPECT_THROW(detector->setMinLineLength(-1), cv::Exception);
+    EXPECT_THROW(detector->setMinLineLengthRatio(1.5), cv::Exception);
+    EXPECT_THROW(detector->setMaxLines(-1), cv::Exception);
+    try
+    {
+        detector->setMaxLines(-3);
+        FAIL() << "no exception";
+    }
+    catch (const cv::Exception& e)
+    {
+        EXPECT_NE(std::string::npos, e.err.find("maxLines")) << e.err;
+        EXPECT_NE(std::string::npos, e.err.find("0 (all)")) << e.err;
+    }
+    EXPECT_EQ(0, detector->getMaxLines());
+    EXPECT_EQ(0.0, detector->getMinLineLength());
+    EXPECT_EQ(0.0, detector->getMinLineLengthRatio());
+}
+
+TEST(LSDAdvance_Selection, frameInSequence_counts_the_calls_of_one_object_until_a_reset)
+{
+    const Mat img = building();
+    Ptr<LSDAdvance> detector = createLSDAdvance(LSDAdvance::PRESET_SEQUENCE);
+    std::vector<Vec4f> lines;
+    for (int k = 0; k < 3; k++)
+    {
+        detector->detect(img, lines);
+        EXPECT_EQ(k, detector->getLastStats().frameInSequence);
+    }
+    detector->reset();
+    detector->detect(img, lines);
+    EXPECT_EQ(0, detector->getLastStats().frameInSequence);
+    detector->detect(img, lines);
+    detector->setMaxLines(10);  // a setter starts a new sequence
+    detector->detect(img, lines);
+    EXPECT_EQ(0, detector->getLastStats().frameInSequence);
+    // A detector made anew each frame never leaves the first frame.
+    for (int k = 0; k < 3; k++)
+    {
+        Ptr<LSDAdvance> perFrame = createLSDAdvance(LSDAdvance::PRESET_SEQUENCE);
+        perFrame->detect(img, lines);
+        EXPECT_EQ(0, perFrame->getLastStats().frameInSequence);
+        EXPECT_EQ(1.0, perFrame->getLastStats().alpha);
+    }
+}
+
+TEST(LSDAdvance_Selection, front_end_preset_keeps_the_strongest_60_lines_of_an_eighth_of_the_image)
+{
+    const Ptr<LSDAdvance> frontEnd = createLSDAdvance(LSDAdvance::PRESET_FRONT_END);
+    EXPECT_EQ(0.9, frontEnd->getLSDParams().scale);
+    EXPECT_EQ(0.125, frontEnd->getMinLineLengthRatio());
+    EXPECT_EQ(60, frontEnd->getMaxLines());
+    EXPECT_EQ(0.0, frontEnd->getMinLineLength());
+    EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, frontEnd->getLengthFilterMode());  // stateless
+
+    // Otherwise the defaults.
+    Ptr<LSDAdvance> reverted = createLSDAdvance(LSDAdvance::PRESET_FRONT_END);
+    LSDAdvance::LSDParams lsd = reverted->getLSDParams();
+    lsd.scale = LSDAdvance::LSDParams().scale;
+    reverted->setLSDParams(lsd);
+    reverted->setMinLineLengthRatio(0);
+    reverted->setMaxLines(0);
+    const LSDAdvance::Params a = reverted->getParams(), b;
+    for (const lsda::Field<LSDAdvance::Params>& f : lsda::fieldsOf<LSDAdvance::Params>())
+        EXPECT_EQ(f.get(b), f.get(a)) << f.name;
+
+    const Mat img = building();
+    std::vector<Vec4f> lines;
+    frontEnd->detect(img, lines);
+    EXPECT_EQ(60u, lines.size());
+    for (const Vec4f& l : lines)
+        EXPECT_GE(lsda::segmentLength(l), 0.125 * std::min(img.cols, img.rows));
+    std::vector<Vec4f> again;
+    frontEnd->detect(img, again);
+    EXPECT_EQ(lines, again);  // stateless
+}
+
+}} // namespace
