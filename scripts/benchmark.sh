@@ -58,7 +58,7 @@ SEQUENCE="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance_filter,lsdadvance_fas
 BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance,lsdadvance_sequence"
 # The front-end mode's methods: the baselines front ends run (PL-VINS's LSD front end first: the
 # time ratios are to it), then LSDAdvance's; one word adds a method.
-FRONTEND="plvins,lsd,fld_half$PEER,lsdadvance,lsdadvance_sequence,lsdadvance_fastest,lsdadvance_scale09"
+FRONTEND="plvins,lsd,fld_half$PEER,lsdadvance,lsdadvance_sequence,lsdadvance_fastest,lsdadvance_front_end"
 
 PAGE="$REPO/doc/results.md"
 WORK="$(mktemp -d)"
