@@ -227,6 +227,7 @@ TEST(LSDAdvance_BaseDetectors, lsd_bases_at_a_scale_below_1_place_edges_where_th
         SCOPED_TRACE(scale);
         LSDAdvance::LSDParams lsd;
         lsd.scale = scale;
+        lsd.fullScaleSigma = 0;  // at scale 1, OpenCV's LSD reads the image unsmoothed
         std::vector<Vec4f> opencv;
         createLineSegmentDetector(lsd.refine, lsd.scale, lsd.sigmaScale, lsd.quant, lsd.angleTolerance, lsd.logEps,
                                  lsd.densityThreshold, lsd.numBins)

@@ -36,6 +36,10 @@
 //   (MERGE_BASELINES) never fuses two baselines, segments of at least baselineRatio times the
 //   longest of their group, and the two halves of a broken edge are two such (in 3 of 10 epochs
 //   LSD's Gaussian at scale 0.8 has not bridged the gap already).
+// - Imgproc_LSD.rotatedRect on PRESET_FRONT_END: its 8 sides (inner and outer edges of 80 x 66
+//   sides drawn 3 px wide) include inner edges of about 60 px, the preset's minimum length
+//   (0.125 min(W, H) at 640 x 480) by design; FLD's and EdgeDrawing's rectangle bounds, which
+//   count fewer sides, are checked on it.
 // ximgproc_ED.constColor counts EdgeDrawing's edge chains (getSegments()); here it counts lines.
 
 #include "test_precomp.hpp"
@@ -119,7 +123,7 @@ LSDAdvance::LSDParams lsdAlgorithm(int refine)
 
 std::vector<Configuration> configurations()
 {
-    static_assert(LSDA_COUNT_OF(lsda::kPresets) == LSDAdvance::PRESET_SEQUENCE + 1, "every preset is below");
+    static_assert(LSDA_COUNT_OF(lsda::kPresets) == LSDAdvance::PRESET_FRONT_END + 1, "every preset is below");
     std::vector<Configuration> all;
     all.push_back({ "defaults", [] { return createLSDAdvance(); }, {} });
     for (int preset = 0; preset < LSDA_COUNT_OF(lsda::kPresets); preset++)
@@ -214,7 +218,8 @@ TEST(LSDAdvance_OpenCVCases, every_count_case_passes_in_every_epoch_for_every_co
     for (const Configuration& c : configurations())
         for (const CountCase& k : countCases())
         {
-            if ((k.lsdAdvanceOnly && !c.create) || (c.name == "PRESET_PAPER" && std::string(k.name).find("mergeLines") != std::string::npos))
+            if ((k.lsdAdvanceOnly && !c.create) || (c.name == "PRESET_PAPER" && std::string(k.name).find("mergeLines") != std::string::npos)
+                || (c.name == "PRESET_FRONT_END" && std::string(k.name) == "Imgproc_LSD.rotatedRect"))
                 continue;
             SCOPED_TRACE(c.name + ", " + k.name);
             Scenes scenes = k.scenes();
@@ -227,7 +232,7 @@ TEST(LSDAdvance_OpenCVCases, every_count_case_passes_in_every_epoch_for_every_co
             }
             checked++;
         }
-    EXPECT_EQ(13 * 5 - 2 + 4 * 4, checked);  // on LSDAdvance (the defaults, 4 presets) all but 2, LSD's on 4 bases
+    EXPECT_EQ(13 * 6 - 3 + 4 * 4, checked);  // on LSDAdvance (the defaults, 5 presets) all but 3, LSD's on 4 bases
 }
 
 // Imgproc_LSD_Common.supportsVec4iResult: detect() into Vec4i gives the Vec4f lines rounded. On
