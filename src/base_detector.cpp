@@ -44,6 +44,12 @@ public:
     explicit FastLsdBase(const LSDAdvance::LSDParams& p) : lsd(p) {}
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE { lsd.detect(gray, segments); }
 
+protected:
+    void detectReadingMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments) CV_OVERRIDE
+    {
+        lsd.detect(gray, segments, mask);
+    }
+
 private:
     FastLsd lsd;
 };
@@ -88,6 +94,13 @@ private:
 };
 
 } // namespace
+
+void BaseSegmentDetector::detectOnMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments)
+{
+    detectReadingMask(gray, mask, segments);
+    if (!mask.empty())
+        cutAtMask(mask, segments, pieces);
+}
 
 Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
                                             const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines)
