@@ -2,8 +2,9 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Stage 0, the base detectors: OpenCV's LSD, FastLineDetector and EDLines (EdgeDrawing), used as
-// they are, and the module's own LSD (fast_lsd.cpp).
+// Stage 0, the base detectors: OpenCV's LSD (from imgproc or ximgproc, opencv_lsd.hpp),
+// FastLineDetector and EDLines (EdgeDrawing), used as they are, and the module's own LSD
+// (fast_lsd.cpp).
 
 #include "precomp.hpp"
 #include "fast_lsd.hpp"
@@ -20,8 +21,8 @@ class LsdBase CV_FINAL : public BaseSegmentDetector
 {
 public:
     explicit LsdBase(const LSDAdvance::LSDParams& p)
-        : lsd(createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
-                                        p.logEps, p.densityThreshold, p.numBins)),
+        : lsd(createOpenCVLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
+                                              p.logEps, p.densityThreshold, p.numBins)),
           scale(p.scale)
     {}
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
@@ -34,7 +35,7 @@ public:
     }
 
 private:
-    Ptr<LineSegmentDetector> lsd;
+    Ptr<OpenCVLineSegmentDetector> lsd;
     double scale;
 };
 

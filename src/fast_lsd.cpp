@@ -531,7 +531,7 @@ void FastLsd::orderTile(Tile& tile)
     for (int y = tile.y0; y < tile.y1; y++)
         defined += rowDefined[y];
     Regions& r = tile.regions;
-    r.keepsVectors = refine >= LSD_REFINE_STD;
+    r.keepsVectors = refine >= kLsdRefineStd;
     r.reserve(defined);
     // The seeds in raster order, in regionIndex until the regions need it (all of them free: the
     // tile's regions have not grown yet). Every defined pixel of a row next to a seam seeds: a
@@ -617,7 +617,7 @@ int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
 void FastLsd::joinAcrossSeams()
 {
     Regions& joined = *acrossSeams;
-    joined.keepsVectors = refine >= LSD_REFINE_STD;
+    joined.keepsVectors = refine >= kLsdRefineStd;
     joined.segments.clear();
     if (tiles.size() == 1)
         return;
@@ -791,9 +791,9 @@ void FastLsd::Regions::emitRegion(FastLsd& lsd)
 {
     Rect rect;
     regionToRect(lsd, lsd.tolerance, lsd.probability, rect);
-    if (lsd.refine >= LSD_REFINE_STD && !refineRegion(lsd, rect))
+    if (lsd.refine >= kLsdRefineStd && !refineRegion(lsd, rect))
         return;
-    if (lsd.refine >= LSD_REFINE_ADV && improveRect(lsd, rect) <= lsd.logEps)
+    if (lsd.refine >= kLsdRefineAdv && improveRect(lsd, rect) <= lsd.logEps)
         return;
     // The 2x2 gradient of pixel (x, y) is that of the point (x + 0.5, y + 0.5).
     Vec4f s((float)(rect.x1 + 0.5), (float)(rect.y1 + 0.5), (float)(rect.x2 + 0.5), (float)(rect.y2 + 0.5));

@@ -12,6 +12,7 @@
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
 #include "fast_lsd.hpp"
+#include "opencv_lsd.hpp"
 #include <algorithm>
 #include <vector>
 

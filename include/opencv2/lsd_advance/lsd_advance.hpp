@@ -152,7 +152,10 @@ public:
     left (EDLines' are turned round where needed). */
     enum BaseDetector
     {
-        BASE_LSD = 0,     //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams
+        /** the LSD algorithm, OpenCV's cv::LineSegmentDetector (or cv::ximgproc::LineSegmentDetector,
+        where opencv#29349 moves it), with LSDParams; on an OpenCV with neither, detect() throws
+        cv::Exception (StsNotImplemented) naming BASE_FAST_LSD (doc/building.md) */
+        BASE_LSD = 0,
         BASE_FLD = 1,     //!< cv::ximgproc::FastLineDetector with FLDParams
         BASE_EDLINES = 2, //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
         /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: with
