@@ -229,17 +229,35 @@ if(BUILD_TESTS)
     endif()
   endforeach()
 
+  # The layout of an OpenCV whose LineSegmentDetector has moved from imgproc to ximgproc
+  # (opencv#29349, opencv_contrib#4158): the module's sources and a BASE_LSD test compiled against
+  # the header layer compat/lsd_in_ximgproc/include, which hides imgproc's LSD and declares
+  # ximgproc's, forwarded to the installed implementation by a library compiled without the layer.
+  set(_compat "${LSDA_ROOT}/compat/lsd_in_ximgproc")
+  add_library(lsda_lsd_in_ximgproc_forward STATIC "${_compat}/line_segment_detector.cpp")
+  target_include_directories(lsda_lsd_in_ximgproc_forward PRIVATE ${OpenCV_INCLUDE_DIRS})
+  target_link_libraries(lsda_lsd_in_ximgproc_forward PUBLIC opencv_core opencv_imgproc)
+  set(_target opencv_test_lsd_advance_lsd_in_ximgproc)
+  add_executable(${_target} ${LSDA_SOURCES} "${_compat}/test_lsd_in_ximgproc.cpp")
+  target_include_directories(${_target} BEFORE PRIVATE "${_compat}/include" "${LSDA_ROOT}/include" "${LSDA_ROOT}/src"
+    ${OpenCV_INCLUDE_DIRS})
+  target_compile_definitions(${_target} PRIVATE ${LSDA_MODULE_DEFINITIONS})
+  target_link_libraries(${_target} PRIVATE lsda_lsd_in_ximgproc_forward lsda_opencv_ts ${LSDA_DEPS} ${LSDA_OPTIONAL_DEPS})
+  target_compile_options(${_target} PRIVATE ${LSDA_WARNINGS} ${LSDA_SANITIZE_OPTIONS})
+  set_target_properties(${_target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
+
   # ctest: find cv::samples::findFile() data (Debian's opencv-doc) unless the caller set it
   set(LSDA_SAMPLES_DATA_PATH "/usr/share/doc/opencv-doc/examples/data" CACHE PATH
       "OPENCV_SAMPLES_DATA_PATH for tests run through ctest")
   if(TARGET opencv_test_lsd_advance)
     add_test(NAME opencv_test_lsd_advance COMMAND opencv_test_lsd_advance)
   endif()
+  add_test(NAME opencv_test_lsd_advance_lsd_in_ximgproc COMMAND opencv_test_lsd_advance_lsd_in_ximgproc)
   if(TARGET opencv_perf_lsd_advance)
     add_test(NAME opencv_perf_lsd_advance_smoke
       COMMAND opencv_perf_lsd_advance --perf_min_samples=1 --perf_force_samples=1 --perf_time_limit=1)
   endif()
-  foreach(_t opencv_test_lsd_advance opencv_perf_lsd_advance_smoke)
+  foreach(_t opencv_test_lsd_advance opencv_test_lsd_advance_lsd_in_ximgproc opencv_perf_lsd_advance_smoke)
     if(TEST ${_t} AND NOT DEFINED ENV{OPENCV_SAMPLES_DATA_PATH})
       set_tests_properties(${_t} PROPERTIES ENVIRONMENT "OPENCV_SAMPLES_DATA_PATH=${LSDA_SAMPLES_DATA_PATH}")
     endif()

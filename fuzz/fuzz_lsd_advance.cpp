@@ -119,6 +119,32 @@ Mat fuzzedImage(FuzzedDataProvider& in)
     return view ? full(Rect(pad, pad, cols, rows)) : full;
 }
 
+// A mask for an image: none most of the time, else of the image's size (all zero, all set,
+// rectangles of zeros, or random bits) and sometimes of another type or size.
+Mat fuzzedMask(FuzzedDataProvider& in, const Size& imageSize)
+{
+    const int kind = in.ConsumeIntegralInRange<int>(0, 7);
+    if (kind <= 2)
+        return Mat();
+    if (kind == 7)
+    {
+        const bool wrongType = in.ConsumeBool();
+        const Size size = wrongType ? imageSize : Size(imageSize.width + in.ConsumeIntegralInRange<int>(1, 3), imageSize.height);
+        return Mat(size, wrongType ? fuzzedType(in) : CV_8UC1, Scalar::all(1));
+    }
+    Mat mask(imageSize, CV_8UC1, Scalar(kind == 3 ? 0 : 255));
+    if (kind == 5)
+        for (int k = in.ConsumeIntegralInRange<int>(1, 6); k > 0; k--)
+        {
+            const Point a(in.ConsumeIntegralInRange<int>(-5, mask.cols + 5), in.ConsumeIntegralInRange<int>(-5, mask.rows + 5));
+            const Point b(in.ConsumeIntegralInRange<int>(-5, mask.cols + 5), in.ConsumeIntegralInRange<int>(-5, mask.rows + 5));
+            rectangle(mask, a, b, Scalar(0), FILLED);
+        }
+    else if (kind == 6 && !mask.empty())
+        RNG(in.ConsumeIntegral<uint32_t>()).fill(mask, RNG::UNIFORM, 0, 2);
+    return mask;
+}
+
 // clampedKeyLines: the lines are KeyLines' endpoints, which linesToKeyLines clamps as LSDDetector
 // does (and which may then have no length).
 void checkLines(const std::vector<Vec4f>& lines, const Size& image, const LSDAdvance& detector,
@@ -187,16 +213,18 @@ void fuzzDetector(FuzzedDataProvider& in)
     for (int f = 0; f < frames && in.remaining_bytes() > 0; f++)
     {
         const Mat image = fuzzedImage(in);
+        const Mat mask = fuzzedMask(in, image.size());
+        const bool maskValid = mask.empty() || (mask.type() == CV_8UC1 && mask.size() == image.size());
         const int overload = in.ConsumeIntegralInRange<int>(0, 2);
         try
         {
             std::vector<Vec4f> lines;
             if (overload == 0)
-                detector->detect(image, lines);
+                detector->detect(image, lines, mask);
             else if (overload == 1)
             {
                 Mat out;
-                detector->detect(image, out);
+                detector->detect(image, out, mask);
                 if (!out.empty() && (out.type() != CV_32FC4 || out.cols != 1))
                     fail("Mat output is N x 1 CV_32FC4", out.type());
                 if (!out.empty())
@@ -206,19 +234,23 @@ void fuzzDetector(FuzzedDataProvider& in)
             {
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
                 std::vector<line_descriptor::KeyLine> keylines;
-                detector->detect(image, keylines);
+                detector->detect(image, keylines, mask);
                 for (const line_descriptor::KeyLine& k : keylines)
                     lines.push_back(Vec4f(k.startPointX, k.startPointY, k.endPointX, k.endPointY));
 #else
-                detector->detect(image, lines);
+                detector->detect(image, lines, mask);
 #endif
             }
+            if (!maskValid)
+                fail("a mask of another type or size was accepted");
             checkLines(lines, image.size(), *detector, overload == 2);
+            if (!mask.empty() && countNonZero(mask) == 0 && !lines.empty())
+                fail("an all-zero mask gave lines", (double)lines.size());
         }
         catch (const cv::Exception&)
         {
             const int type = image.type();
-            if (!image.empty() && (type == CV_8UC1 || type == CV_8UC3 || type == CV_8UC4))
+            if (!image.empty() && (type == CV_8UC1 || type == CV_8UC3 || type == CV_8UC4) && maskValid)
                 fail("an accepted image was rejected", type);
         }
     }
@@ -240,21 +272,27 @@ void fuzzDetector(FuzzedDataProvider& in)
     // Clipped to a fuzzed image size, or not clipped.
     const Size imageSize = in.ConsumeBool() ? Size() : Size(in.ConsumeIntegralInRange<int>(1, 300),
                                                               in.ConsumeIntegralInRange<int>(1, 300));
+    // Sometimes with a mask of that size (an image size of 0 x 0 takes the mask's, of 1 to 300).
+    const Size maskSize = imageSize.empty() ? Size(in.ConsumeIntegralInRange<int>(1, 300), in.ConsumeIntegralInRange<int>(1, 300))
+                                            : imageSize;
+    const Mat mask = in.ConsumeBool() ? Mat() : fuzzedMask(in, maskSize);
+    valid = valid && (mask.empty() || (mask.type() == CV_8UC1 && (imageSize.empty() || mask.size() == imageSize)));
     try
     {
         std::vector<Vec4f> lines;
-        detector->processSegments(segments, lines, imageSize);
+        detector->processSegments(segments, lines, imageSize, mask);
         const LSDAdvanceStats stats = detector->getLastStats();
         if (!valid)
             fail("invalid segments were accepted");
-        if ((int)lines.size() != stats.outputSegments || stats.outputSegments > (int)segments.size())
+        // The cut at a mask may make several pieces of a segment.
+        if ((int)lines.size() != stats.outputSegments || (mask.empty() && stats.outputSegments > (int)segments.size()))
             fail("processSegments output count", (double)lines.size());
         for (const Vec4f& l : lines)
             for (int i = 0; i < 4; i++)
                 if (!std::isfinite(l[i]))
                     fail("finite processSegments output", l[i]);
-        if (!imageSize.empty())
-            checkLines(lines, imageSize, *detector);
+        if (!imageSize.empty() || !mask.empty())
+            checkLines(lines, mask.empty() ? imageSize : mask.size(), *detector);
     }
     catch (const cv::Exception&)
     {

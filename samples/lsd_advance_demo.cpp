@@ -9,11 +9,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/lsd_advance.hpp>
+#include <opencv2/ximgproc.hpp>
 
 #include <cstdio>
 #include <iostream>
 
 using namespace cv;
+// LineSegmentDetector is cv::'s up to OpenCV 4.x and cv::ximgproc::'s once it moves (opencv#29349):
+// with both namespaces in use, the names below find either.
+using namespace cv::ximgproc;
 
 // The segments drawn on the darkened image, with a title.
 static Mat panel(const Mat& gray, const std::vector<Vec4f>& lines, const String& title)

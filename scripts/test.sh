@@ -7,7 +7,8 @@
 #
 # Installs the Debian dependencies, fetches Debian's OpenCV source package of the installed
 # version (for OpenCV's test framework `ts`, which Debian does not package), builds the module
-# standalone with tests and the Python module, runs every unit test of opencv_test_lsd_advance,
+# standalone with tests and the Python module, runs every unit test of opencv_test_lsd_advance and
+# of opencv_test_lsd_advance_lsd_in_ximgproc (the module built with LineSegmentDetector in ximgproc),
 # the Python tests and the tests of the programs and scripts (scripts/test_python.sh:
 # misc/python/test, apps/lsd_advance_bench/test and scripts/test) and a short perf smoke run of
 # opencv_perf_lsd_advance. Ends with the line `tests: N passed, M failed` (all of them together);
@@ -74,6 +75,19 @@ if [ "$test_rc" -eq 0 ] && [ "$passed" -eq 0 ] && [ "$failed" -eq 0 ]; then
   test_rc=1
 fi
 
+section "unit tests against LineSegmentDetector moved to ximgproc: opencv_test_lsd_advance_lsd_in_ximgproc"
+LAYOUT_LOG="$BUILD/opencv_test_lsd_advance_lsd_in_ximgproc.log"
+layout_rc=0
+( cd "$BUILD" && ./opencv_test_lsd_advance_lsd_in_ximgproc ) 2>&1 | tee "$LAYOUT_LOG" || layout_rc=${PIPESTATUS[0]}
+layout_rc=${layout_rc:-0}
+layout_passed="$(sed -nE 's/^\[  PASSED  \] ([0-9]+) tests?\..*/\1/p' "$LAYOUT_LOG" | tail -n1)"
+layout_failed="$(sed -nE 's/^\[  FAILED  \] ([0-9]+) tests?, listed below:.*/\1/p' "$LAYOUT_LOG" | tail -n1)"
+layout_passed="${layout_passed:-0}"; layout_failed="${layout_failed:-0}"
+if [ "$layout_rc" -ne 0 ] && [ "$layout_failed" -eq 0 ]; then layout_failed=1; fi
+if [ "$layout_passed" -eq 0 ] && [ "$layout_failed" -eq 0 ]; then layout_failed=1; fi
+passed=$((passed + layout_passed))
+failed=$((failed + layout_failed))
+
 section "Python and sample program tests: scripts/test_python.sh"
 PY_LOG="$BUILD/python_tests.log"
 py_rc=0
@@ -109,6 +123,6 @@ if [ -n "$skipped" ]; then
 else
   echo "tests: $passed passed, $failed failed"
 fi
-if [ "$test_rc" -ne 0 ] || [ "$py_rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$perf_rc" -ne 0 ]; then
+if [ "$test_rc" -ne 0 ] || [ "$layout_rc" -ne 0 ] || [ "$py_rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$perf_rc" -ne 0 ]; then
   exit 1
 fi

@@ -2,8 +2,9 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Stage 0, the base detectors: OpenCV's LSD, FastLineDetector and EDLines (EdgeDrawing), used as
-// they are, and the module's own LSD (fast_lsd.cpp).
+// Stage 0, the base detectors: OpenCV's LSD (from imgproc or ximgproc, opencv_lsd.hpp),
+// FastLineDetector and EDLines (EdgeDrawing), used as they are, and the module's own LSD
+// (fast_lsd.cpp).
 
 #include "precomp.hpp"
 #include "fast_lsd.hpp"
@@ -20,8 +21,8 @@ class LsdBase CV_FINAL : public BaseSegmentDetector
 {
 public:
     explicit LsdBase(const LSDAdvance::LSDParams& p)
-        : lsd(createLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
-                                        p.logEps, p.densityThreshold, p.numBins)),
+        : lsd(createOpenCVLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
+                                              p.logEps, p.densityThreshold, p.numBins)),
           scale(p.scale), fullScaleSmoothing(p.fullScaleSigma)
     {}
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
@@ -39,7 +40,7 @@ public:
     }
 
 private:
-    Ptr<LineSegmentDetector> lsd;
+    Ptr<OpenCVLineSegmentDetector> lsd;
     double scale;
     FullScaleSmoothing fullScaleSmoothing;
 };
@@ -51,6 +52,13 @@ public:
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
     {
         lsd.detect(gray, segments);
+        toFullResolution(segments, scale);
+    }
+
+protected:
+    void detectReadingMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments) CV_OVERRIDE
+    {
+        lsd.detect(gray, segments, mask);
         toFullResolution(segments, scale);
     }
 
@@ -99,6 +107,13 @@ private:
 };
 
 } // namespace
+
+void BaseSegmentDetector::detectOnMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments)
+{
+    detectReadingMask(gray, mask, segments);
+    if (!mask.empty())
+        cutAtMask(mask, segments, pieces);
+}
 
 Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
                                             const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines)

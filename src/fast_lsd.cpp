@@ -174,6 +174,33 @@ void gradientRow(const uchar* above, const uchar* below, int n, int threshold, f
     defined = count;
 }
 
+// The mask on a row of the gradient pass (inside: the gradient's 2x2 support is on the mask):
+// the pixels outside made undefined, and the row's maximum and count of defined pixels over the
+// others. A row wholly inside is left as it is.
+void maskRow(const uchar* inside, const uchar* above, const uchar* below, int n, int threshold, float* norm,
+             Vec2s* level, int& rowMax, int& defined)
+{
+    if (std::find(inside, inside + n, 0) == inside + n)
+        return;
+    int maxNorm2 = 0, count = 0;
+    for (int x = 0; x < n; x++)
+    {
+        if (!inside[x])
+        {
+            norm[x] = 0.f;
+            level[x] = Vec2s(0, 0);
+            continue;
+        }
+        int gx, gy;
+        gradient2x2(above, below, x, gx, gy);
+        const int n2 = gx * gx + gy * gy;
+        count += n2 > threshold;
+        maxNorm2 = std::max(maxNorm2, n2);
+    }
+    rowMax = maxNorm2;
+    defined = count;
+}
+
 // Whether a pixel's vector is not (0, 0): it has a defined gradient and is in no region yet.
 inline bool isFree(const Vec2s& u)
 {
@@ -354,6 +381,9 @@ public:
             const size_t row = (size_t)(y + 1) * lsd.stride + 1;
             float* norm = &lsd.gradNorm[row];
             gradientRow(above, below, n, lsd.threshold, norm, &lsd.level[row][0], lsd.rowMaxNorm2[y], lsd.rowDefined[y]);
+            if (!lsd.gradientMask.empty())
+                maskRow(lsd.gradientMask.ptr<uchar>(y), above, below, n, lsd.threshold, norm, &lsd.level[row],
+                        lsd.rowMaxNorm2[y], lsd.rowDefined[y]);
             lsd.level[row - 1] = lsd.level[row + n] = Vec2s(0, 0);
         }
     }
@@ -382,11 +412,13 @@ private:
     FastLsd& lsd;
 };
 
-void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
+void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments, const Mat& mask)
 {
     CV_CheckTypeEQ(gray.type(), CV_8UC1, "FastLsd: the image must be CV_8UC1");
+    CV_Assert(mask.empty() || (mask.type() == CV_8UC1 && mask.size() == gray.size()));
     segments.clear();
     const Mat* image = &gray;
+    const Mat* maskAtScale = &mask;
     if (scale != 1.0)
     {
         // Anti-aliasing as the LSD algorithm prescribes: a Gaussian of sigma = sigmaScale / scale
@@ -400,6 +432,11 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
         GaussianBlur(gray, blurred, Size(2 * half + 1, 2 * half + 1), sigma, sigma, BORDER_REFLECT_101 | BORDER_ISOLATED);
         resize(blurred, scaled, Size(), scale, scale, INTER_LINEAR_EXACT);
         image = &scaled;
+        if (!mask.empty())
+        {
+            resize(mask, scaledMask, Size(), scale, scale, INTER_NEAREST_EXACT);
+            maskAtScale = &scaledMask;
+        }
     }
     if (image->cols < 2 || image->rows < 2)
         return;
@@ -412,6 +449,11 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments)
         image = &fullScaleSmoothing.apply(gray);
 
     analysed = *image;
+    // The gradient of pixel (x, y) reads the pixels (x..x+1, y..y+1).
+    if (mask.empty())
+        gradientMask.release();
+    else
+        erode(*maskAtScale, gradientMask, Mat::ones(2, 2, CV_8U), Point(0, 0));
     width = image->cols;
     height = image->rows;
     stride = width + 1;
@@ -492,7 +534,7 @@ void FastLsd::orderTile(Tile& tile)
     for (int y = tile.y0; y < tile.y1; y++)
         defined += rowDefined[y];
     Regions& r = tile.regions;
-    r.keepsVectors = refine >= LSD_REFINE_STD;
+    r.keepsVectors = refine >= kLsdRefineStd;
     r.reserve(defined);
     // The seeds in raster order, in regionIndex until the regions need it (all of them free: the
     // tile's regions have not grown yet). Every defined pixel of a row next to a seam seeds: a
@@ -562,7 +604,7 @@ int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
 void FastLsd::joinAcrossSeams()
 {
     Regions& joined = *acrossSeams;
-    joined.keepsVectors = refine >= LSD_REFINE_STD;
+    joined.keepsVectors = refine >= kLsdRefineStd;
     joined.segments.clear();
     if (tiles.size() == 1)
         return;
@@ -736,9 +778,9 @@ void FastLsd::Regions::emitRegion(FastLsd& lsd)
 {
     Rect rect;
     regionToRect(lsd, lsd.tolerance, lsd.probability, rect);
-    if (lsd.refine >= LSD_REFINE_STD && !refineRegion(lsd, rect))
+    if (lsd.refine >= kLsdRefineStd && !refineRegion(lsd, rect))
         return;
-    if (lsd.refine >= LSD_REFINE_ADV && improveRect(lsd, rect) <= lsd.logEps)
+    if (lsd.refine >= kLsdRefineAdv && improveRect(lsd, rect) <= lsd.logEps)
         return;
     // The 2x2 gradient of pixel (x, y) is that of the point (x + 0.5, y + 0.5).
     Vec4f s((float)(rect.x1 + 0.5), (float)(rect.y1 + 0.5), (float)(rect.x2 + 0.5), (float)(rect.y2 + 0.5));
@@ -1045,13 +1087,15 @@ double FastLsd::rectLogNfa(const Rect& rect, std::vector<double>& logFactorials)
             continue;  // the last row and column have no gradient
         const uchar* above = analysed.ptr<uchar>(y);
         const uchar* below = analysed.ptr<uchar>(y + 1);
+        const uchar* inside = gradientMask.empty() ? nullptr : gradientMask.ptr<uchar>(y);
         for (int x = xFirst; x <= std::min(xLast, width - 2); x++)
         {
             // Pixels of regions count here too: the test of alignment, from the image.
             int gx, gy;
             gradient2x2(above, below, x, gx, gy);
             const int n2 = gx * gx + gy * gy;
-            aligned += n2 > threshold && -gy * rect.dx + gx * rect.dy >= cosTol * std::sqrt((double)n2);
+            aligned += n2 > threshold && (!inside || inside[x]) &&
+                       -gy * rect.dx + gx * rect.dy >= cosTol * std::sqrt((double)n2);
         }
     }
     return logNfa(total, aligned, rect.p, logFactorials);

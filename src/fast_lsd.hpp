@@ -28,8 +28,13 @@ class CV_EXPORTS FastLsd
 public:
     explicit FastLsd(const LSDAdvance::LSDParams& params);
     ~FastLsd();
-    //! Segments of a CV_8UC1 image.
-    void detect(const Mat& gray, std::vector<Vec4f>& segments);
+    //! Segments of a CV_8UC1 image. With a mask (CV_8UC1 of the image's size; empty for none),
+    //! a pixel whose gradient reads a masked-out (zero) pixel of the mask at the analysis scale
+    //! is undefined, as a pixel of too low a gradient is: it neither seeds, nor joins a region,
+    //! nor counts as aligned in a rectangle. Below scale 1 the mask is sub-sampled to the
+    //! analysis scale as the image is, each pixel taking the mask's value at the full-resolution
+    //! pixel nearest its centre (INTER_NEAREST_EXACT).
+    void detect(const Mat& gray, std::vector<Vec4f>& segments, const Mat& mask = Mat());
     //! The tiles of the last frame: the gradient pixels (at the analysis scale) whose regions
     //! each grew alone.
     std::vector<cv::Rect> tileAreas() const;
@@ -73,6 +78,9 @@ private:
     // a defined gradient are inside the buffers).
     Mat blurred, scaled, analysed;  //!< the image smoothed, at the analysis scale; a header of the one analysed
     FullScaleSmoothing fullScaleSmoothing;  //!< at scale 1: LSDParams::fullScaleSigma
+    //! The mask at the analysis scale, and where the 2x2 support of each gradient is on it (empty
+    //! without a mask).
+    Mat scaledMask, gradientMask;
     int width = 0, height = 0, stride = 0;
     int threshold = 0;              //!< a pixel's gradient is defined when gx^2 + gy^2 > threshold
     float seedNorm = 0;             //!< gradient norm |g| / 2 from which a pixel seeds a region

@@ -25,11 +25,11 @@ float clampedCoordinate(float v, int side)
 
 } // namespace
 
-void LSDAdvance::detect(InputArray image, std::vector<KeyLine>& keylines)
+void LSDAdvance::detect(InputArray image, std::vector<KeyLine>& keylines, InputArray mask)
 {
     CV_INSTRUMENT_REGION();
     std::vector<Vec4f> lines;
-    detect(image, lines);
+    detect(image, lines, mask);
     linesToKeyLines(lines, image.size(), keylines);
     std::vector<float> responses;
     getLastResponses(responses);  // detect() computed them: its order

@@ -24,25 +24,31 @@ class LSDAdvanceImpl CV_FINAL : public LSDAdvance
 public:
     explicit LSDAdvanceImpl(const lsda::Parameters& p) : parameters(p) {}
 
-    void detect(InputArray image, OutputArray lines) CV_OVERRIDE
+    void detect(InputArray image, OutputArray lines, InputArray mask) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
         const int64 start = getTickCount();
         const Mat gray = lsda::toGray8U(image);
+        const Mat onMask = lsda::toMask(mask, gray.size(), "LSDAdvance::detect");
         if (!baseDetector)
             baseDetector = lsda::createBaseDetector(parameters.own.baseDetector, parameters.lsd, parameters.fld,
                                                     parameters.edLines);
-        baseDetector->detect(gray, frame.incoming);
-        runStages(elapsedMs(start), &gray, lines);
+        baseDetector->detectOnMask(gray, onMask, frame.incoming);
+        runStages(elapsedMs(start), &gray, onMask, lines);
     }
 
-    void processSegments(InputArray segments, OutputArray lines, Size imageSize) CV_OVERRIDE
+    void processSegments(InputArray segments, OutputArray lines, Size imageSize, InputArray mask) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
         CV_CheckGE(imageSize.width, 0, "LSDAdvance::processSegments: imageSize is empty or positive");
         CV_CheckGE(imageSize.height, 0, "LSDAdvance::processSegments: imageSize is empty or positive");
+        if (imageSize.empty())
+            imageSize = mask.size();  // the mask's image, or none
+        const Mat onMask = lsda::toMask(mask, imageSize, "LSDAdvance::processSegments");
         lsda::toImageSegments(segments, "LSDAdvance::processSegments: segments", frame.incoming);
-        runStages(0.0, nullptr, lines, imageSize);
+        if (!onMask.empty())
+            lsda::cutAtMask(onMask, frame.incoming, frame.pieces);
+        runStages(0.0, nullptr, onMask, lines, imageSize);
     }
 
     void drawSegments(InputOutputArray image, InputArray lines) CV_OVERRIDE
@@ -69,13 +75,20 @@ public:
                              OutputArray merged) const CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        Mat(frame.base).copyTo(base);
-        Mat(frame.filtered).copyTo(filtered);
-        Mat(frame.merged).copyTo(merged);
-        std::vector<int> labels;
-        if (frame.grouped)
-            lsda::groupLabels(frame.groups, labels);
-        Mat(labels).copyTo(groupLabels);
+        // Only the outputs asked for (noArray() for the others).
+        if (base.needed())
+            Mat(frame.base).copyTo(base);
+        if (filtered.needed())
+            Mat(frame.filtered).copyTo(filtered);
+        if (merged.needed())
+            Mat(frame.merged).copyTo(merged);
+        if (groupLabels.needed())
+        {
+            std::vector<int> labels;
+            if (frame.grouped)
+                lsda::groupLabels(frame.groups, labels);
+            Mat(labels).copyTo(groupLabels);
+        }
     }
 
     void getLastSources(OutputArrayOfArrays sources) const CV_OVERRIDE
@@ -137,7 +150,8 @@ private:
     // Stages 1-3 in the configured order on the segments in frame.incoming, which become the
     // frame's base segments, then the clipping to the image gray, or to an image of imageSize
     // when there is no gray (processSegments; none when imageSize is empty), then the selection.
-    void runStages(double baseMs, const Mat* gray, OutputArray lines, Size imageSize = Size())
+    // Stage 3 fuses nothing across the mask (empty: none).
+    void runStages(double baseMs, const Mat* gray, const Mat& mask, OutputArray lines, Size imageSize = Size())
     {
         if (gray)
             imageSize = gray->size();
@@ -154,7 +168,7 @@ private:
         const bool filterFirst = parameters.own.stageOrder == FILTER_THEN_MERGE;
         if (filterFirst)
             filterStage(frame.base, true, gray, frame.filtered, stats);
-        mergeStage(filterFirst ? frame.filtered : frame.base, frame.merged, stats);
+        mergeStage(filterFirst ? frame.filtered : frame.base, mask, frame.merged, stats);
         if (!filterFirst)
             filterStage(frame.merged, !frame.grouped, gray, frame.filtered, stats);
         const std::vector<Vec4f>& last = filterFirst ? frame.merged : frame.filtered;
@@ -190,7 +204,7 @@ private:
         stats.filterMs += elapsedMs(t);
     }
 
-    void mergeStage(const std::vector<Vec4f>& in, std::vector<Vec4f>& merged, LSDAdvanceStats& stats)
+    void mergeStage(const std::vector<Vec4f>& in, const Mat& mask, std::vector<Vec4f>& merged, LSDAdvanceStats& stats)
     {
         const lsda::MergingParams merging(parameters.own);
         frame.grouped = merging.mergeStrategy != MERGE_NONE;  // with MERGE_NONE, stages 2 and 3 are skipped
@@ -205,7 +219,7 @@ private:
         stats.mergeGroups = lsda::mergeGroupCount(frame.groups);
         stats.groupingMs = elapsedMs(t);
         t = getTickCount();
-        lsda::mergeGroups(in, frame.groups, merging, merged, frame.mergedInto, frame.merging);
+        lsda::mergeGroups(in, frame.groups, merging, merged, frame.mergedInto, frame.merging, mask);
         frame.provenance.followMerged(frame.mergedInto);
         stats.mergedSegments = (int)merged.size();
         stats.mergingMs = elapsedMs(t);
@@ -218,6 +232,7 @@ private:
     struct Frame
     {
         std::vector<Vec4f> incoming;  // segments of the current call until its stages run
+        std::vector<Vec4f> pieces;    // a buffer of the cut at the mask
         std::vector<Vec4f> base, filtered, merged, clipped, selected;
         std::vector<float> responses;  // of the selected lines, with an image
         bool grouped = false;         // groups partition stage 2's input

@@ -189,7 +189,7 @@ Parameters presetParameters(int preset)
     case LSDAdvance::PRESET_PAPER:
         // OpenCV's LSD with its own set-up (createLineSegmentDetector's defaults), the paper's base.
         p.own.baseDetector = LSDAdvance::BASE_LSD;
-        p.lsd.refine = LSD_REFINE_STD;
+        p.lsd.refine = lsda::kLsdRefineStd;
         p.lsd.scale = 0.8;
         p.own.lengthFilterMode = LSDAdvance::LENGTH_FILTER_INTERFRAME;
         p.own.lengthThresholdRule = LSDAdvance::LENGTH_THRESHOLD_PAPER;

@@ -17,6 +17,7 @@
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
 #include "opencv2/imgproc.hpp"
+#include "opencv_lsd.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +52,7 @@
 
 // LSDAdvance::LSDParams: X(type, field, default, range, key in files of version 4.6.0 or nullptr)
 #define LSDA_LSD_PARAMS(X)                                                                                         \
-    X(int, refine, LSD_REFINE_NONE, Range::enumOf(kLsdRefinements), "lsdRefine")                                   \
+    X(int, refine, lsda::kLsdRefineNone, Range::enumOf(kLsdRefinements), "lsdRefine")                              \
     X(double, scale, 1.0, Range::real(0, OPEN, 1, CLOSED), "lsdScale")                                             \
     X(double, sigmaScale, 0.6, Range::real(0, OPEN, 100, CLOSED), "lsdSigmaScale")                                 \
     X(double, fullScaleSigma, 0.5, Range::real(0, CLOSED, 3, CLOSED, " px"), nullptr)                              \
@@ -119,7 +120,7 @@ static_assert(LSDA_COUNT_OF(kLengthThresholdRules) == LSDAdvance::LENGTH_THRESHO
 static_assert(LSDA_COUNT_OF(kStageOrders) == LSDAdvance::MERGE_THEN_FILTER + 1, "a name per LSDAdvance::StageOrder");
 static_assert(LSDA_COUNT_OF(kAngleBinnings) == LSDAdvance::ANGLE_BINS_NEIGHBOURS + 1, "a name per LSDAdvance::AngleBinning");
 static_assert(LSDA_COUNT_OF(kMergeStrategies) == LSDAdvance::MERGE_LONGEST_FIRST + 1, "a name per LSDAdvance::MergeStrategy");
-static_assert(LSDA_COUNT_OF(kLsdRefinements) == LSD_REFINE_ADV + 1, "a name per cv::LineSegmentDetectorModes");
+static_assert(LSDA_COUNT_OF(kLsdRefinements) == kLsdRefineAdv + 1, "a name per cv::LineSegmentDetectorModes");
 static_assert(LSDA_COUNT_OF(kPresets) == LSDAdvance::PRESET_FRONT_END + 1, "a name per LSDAdvance::Preset");
 static_assert(LSDA_COUNT_OF(kGradientOperators) == EdgeDrawing::LSD + 1, "a name per EdgeDrawing::GradientOperator");
 

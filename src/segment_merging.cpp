@@ -40,10 +40,24 @@ Point2d unitDirection(const Vec4f& s)
     return len > 0 ? d * (1.0 / len) : Point2d(1, 0);
 }
 
+// Whether the gap between two segments along the line they fuse into (from the end of the
+// projection of one on it to the start of the other's; none when they overlap) is on the mask.
+bool gapInMask(const Mat& mask, const Vec4f& base, const Vec4f& seg)
+{
+    const Vec4f fused = fuseSegments(base, seg);
+    const Point2d origin = startOf(fused), u = unitDirection(fused);
+    const auto along = [&](const Point2d& p) { return (p - origin).dot(u); };
+    const double a0 = std::min(along(startOf(base)), along(endOf(base))), a1 = std::max(along(startOf(base)), along(endOf(base)));
+    const double b0 = std::min(along(startOf(seg)), along(endOf(seg))), b1 = std::max(along(startOf(seg)), along(endOf(seg)));
+    const double from = std::min(a1, b1), to = std::max(a0, b0);
+    return from >= to || inMask(mask, origin + u * from, origin + u * to);
+}
+
 // Whether seg may fuse into base: inside the perpendicular gate, closer than Dth, and scoring
 // at least the threshold (the score is returned). Without the distance condition, direction and
 // length alone (0.6 with the paper's weights) would join collinear pieces any distance apart.
-bool passes(const Vec4f& base, const Vec4f& seg, const MergingParams& params, double& score)
+// With a mask, the gap between the two along their fused line must also be on it.
+bool passes(const Vec4f& base, const Vec4f& seg, const MergingParams& params, const Mat& mask, double& score)
 {
     if (perpendicularOffset(base, seg) > params.maxPerpendicularOffset)
         return false;
@@ -51,7 +65,7 @@ bool passes(const Vec4f& base, const Vec4f& seg, const MergingParams& params, do
     if (terms.proximity <= 0)
         return false;
     score = similarityScore(terms, params);
-    return score >= params.mergeThreshold;
+    return score >= params.mergeThreshold && (mask.empty() || gapInMask(mask, base, seg));
 }
 
 // Rounding slack of the pruning bounds below: they may only ever let more pairs through.
@@ -125,7 +139,7 @@ private:
 // fusion happens; a piece too far from its baseline in one round may join once its neighbour
 // has. Only the segments a grown baseline can reach, and those whose fusion failed, are scored
 // again: the others' best baseline cannot have changed.
-void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params)
+void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params, const Mat& mask)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -190,7 +204,7 @@ void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params)
             for (; it != ws.baselineStarts.end() && it->first <= span[1] + reach; ++it)
             {
                 const int b = it->second;
-                if (passes(geometry[b], geometry[s], params, score) &&
+                if (passes(geometry[b], geometry[s], params, mask, score) &&
                     (score > best.score || (score == best.score && b < best.baseline)))
                     best = { score, s, b };
             }
@@ -206,7 +220,7 @@ void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params)
         double score;
         for (const MergeCandidate& c : ws.candidates)
         {
-            if (!passes(geometry[c.baseline], geometry[c.segment], params, score))
+            if (!passes(geometry[c.baseline], geometry[c.segment], params, mask, score))
                 continue;
             geometry[c.baseline] = fuseSegments(geometry[c.baseline], geometry[c.segment]);
             ws.consumed[c.segment] = 1;
@@ -247,7 +261,7 @@ void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params)
 // again and again until none passes; equal lengths go by index. Unlike the paper's rule, two
 // long collinear pieces of one edge can join. The shorter segments are visited outwards from
 // the base's projection and the visit stops where no segment can reach the best score so far.
-void mergeLongestFirst(MergeWorkspace& ws, const MergingParams& params)
+void mergeLongestFirst(MergeWorkspace& ws, const MergingParams& params, const Mat& mask)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -286,7 +300,7 @@ void mergeLongestFirst(MergeWorkspace& ws, const MergingParams& params)
             double radius = reach(params.mergeThreshold);
             const LineGate gate(b, params.maxPerpendicularOffset);
             auto consider = [&](int seg) {
-                if (gate.mayPass(geometry[seg]) && passes(b, geometry[seg], params, score) &&
+                if (gate.mayPass(geometry[seg]) && passes(b, geometry[seg], params, mask, score) &&
                     (score > bestScore || (score == bestScore && ws.rank[seg] < ws.rank[best])))
                 {
                     best = seg;
@@ -507,7 +521,7 @@ int ProjectionSweep::lastStartingBefore(int lane, double value)
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                  const MergingParams& params, std::vector<Vec4f>& merged, std::vector<int>& mergedInto,
-                 MergeWorkspace& ws)
+                 MergeWorkspace& ws, const Mat& mask)
 {
     merged.clear();
     merged.reserve(segments.size());
@@ -532,9 +546,9 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
         ws.fusedInto.assign(n, -1);
         ws.length.resize(n);
         if (params.mergeStrategy == LSDAdvance::MERGE_BASELINES)
-            mergeIntoBaselines(ws, params);
+            mergeIntoBaselines(ws, params, mask);
         else
-            mergeLongestFirst(ws, params);
+            mergeLongestFirst(ws, params, mask);
         ws.outputOf.assign(n, -1);
         for (int k = 0; k < n; k++)
             if (!ws.consumed[k])
@@ -554,11 +568,11 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
 }
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                 const MergingParams& params, std::vector<Vec4f>& merged)
+                 const MergingParams& params, std::vector<Vec4f>& merged, const Mat& mask)
 {
     MergeWorkspace workspace;
     std::vector<int> mergedInto;
-    mergeGroups(segments, groups, params, merged, mergedInto, workspace);
+    mergeGroups(segments, groups, params, merged, mergedInto, workspace, mask);
 }
 
 }}} // namespace cv::ximgproc::lsda

@@ -12,6 +12,7 @@
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
 #include "fast_lsd.hpp"
+#include "opencv_lsd.hpp"
 #include <algorithm>
 #include <vector>
 
@@ -41,6 +42,22 @@ void toImageSegments(InputArray lines, const char* what, std::vector<Vec4f>& seg
 //! LSDAdvance::drawSegments(): the segments in red, 1 px wide, on a gray (made BGR) or BGR image.
 void drawSegments(InputOutputArray image, InputArray lines);
 
+//--- the mask (image_mask.cpp)
+
+//! The mask of a call as a CV_8UC1 view of imageSize, empty for none (an empty array); throws on
+//! another type or size, naming `what`.
+Mat toMask(InputArray mask, Size imageSize, const char* what);
+
+//! Whether the mask is set at every sample from a to b (at most 1 px apart, both ends included;
+//! each sample reads the pixel nearest to it, clamped into the image).
+CV_EXPORTS bool inMask(const Mat& mask, const Point2d& a, const Point2d& b);
+
+//! Cuts each segment at a non-empty mask, keeping its pieces on it, in order and orientation: the
+//! segment's part inside the image (clipToDomain) is sampled as inMask() samples it, and each run
+//! of two or more samples on the mask is a piece from its first sample to its last; a segment
+//! wholly on the mask is kept unchanged. pieces is a buffer.
+CV_EXPORTS void cutAtMask(const Mat& mask, std::vector<Vec4f>& segments, std::vector<Vec4f>& pieces);
+
 //--- stage 0: base detection (base_detector.cpp)
 
 //! Stage 0 behind one interface: OpenCV's detectors, constructed once and reused frame to frame.
@@ -51,6 +68,20 @@ public:
     virtual ~BaseSegmentDetector() {}
     //! Segments of a CV_8UC1 image, oriented brighter side on the left.
     virtual void detect(const Mat& gray, std::vector<Vec4f>& segments) = 0;
+    //! The segments on a mask (toMask(); empty for none): those of the detector, cut at the mask
+    //! (cutAtMask()), the detector reading the mask itself when it can (BASE_FAST_LSD).
+    void detectOnMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments);
+
+protected:
+    //! The detection before the cut: detect(), which does not read the mask, unless overridden.
+    virtual void detectReadingMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments)
+    {
+        CV_UNUSED(mask);
+        detect(gray, segments);
+    }
+
+private:
+    std::vector<Vec4f> pieces;
 };
 
 //! The detector of kind (LSDAdvance::BaseDetector) with its parameters (those of the other kinds
@@ -261,14 +292,15 @@ struct MergeWorkspace;
 //! Merges each group with params.mergeStrategy (MERGE_NONE passes the segments on) and the score's parameters;
 //! output keeps group order, and member order inside a group; mergedInto gets, for each segment,
 //! the index of the merged segment it is part of. The result is that of scoring every pair of
-//! the group, computed with the sweep.
+//! the group, computed with the sweep. With a mask (toMask()), two segments fuse only when the
+//! gap between them along the line they fuse into is on the mask (inMask()).
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                             const MergingParams& params, std::vector<Vec4f>& merged,
-                            std::vector<int>& mergedInto, MergeWorkspace& workspace);
+                            std::vector<int>& mergedInto, MergeWorkspace& workspace, const Mat& mask = Mat());
 
 //! The same with a temporary workspace, without mergedInto.
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
-                            const MergingParams& params, std::vector<Vec4f>& merged);
+                            const MergingParams& params, std::vector<Vec4f>& merged, const Mat& mask = Mat());
 
 //--- after the stages: clipping to the image (image_clipping.cpp)
 

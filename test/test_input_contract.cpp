@@ -231,6 +231,80 @@ TEST(LSDAdvance_InputContract, umat_input_gives_the_lines_of_the_mat)
     EXPECT_EQ(detectFresh(img), detectFresh(img.getUMat(ACCESS_READ)));
 }
 
+//--- masks
+
+// Zeros over a quarter of the image and in a hole: the mask changes the lines.
+Mat quarterMask(const Size& size)
+{
+    Mat mask(size, CV_8UC1, Scalar(255));
+    mask(Rect(0, 0, size.width / 2, size.height / 2)).setTo(0);
+    mask(Rect(size.width / 2, size.height / 2, size.width / 5, size.height / 5)).setTo(0);
+    return mask;
+}
+
+std::vector<Vec4f> detectFresh(InputArray image, InputArray mask)
+{
+    std::vector<Vec4f> lines;
+    createLSDAdvance()->detect(image, lines, mask);
+    return lines;
+}
+
+TEST(LSDAdvance_InputContract, mask_of_another_type_is_rejected_naming_it_and_changes_nothing)
+{
+    const Mat frame = sequenceFrames()[2];
+    for (int type : { CV_8UC3, CV_16UC1, CV_32FC1, CV_8SC1 })
+        expectRejectedAndStillCorrect(
+            [&](LSDAdvance& d) {
+                std::vector<Vec4f> lines;
+                d.detect(frame, lines, Mat(frame.size(), type, Scalar::all(1)));
+            },
+            { "mask", typeToString(type), "CV_8UC1 of the image's size" });
+}
+
+TEST(LSDAdvance_InputContract, mask_of_another_size_is_rejected_naming_both_sizes_and_changes_nothing)
+{
+    const Mat frame = sequenceFrames()[2];
+    const Mat mask(frame.rows + 1, frame.cols, CV_8UC1, Scalar(255));
+    expectRejectedAndStillCorrect(
+        [&](LSDAdvance& d) {
+            std::vector<Vec4f> lines;
+            d.detect(frame, lines, mask);
+        },
+        { "mask", cv::format("%dx%d", frame.cols, frame.rows), cv::format("%dx%d", mask.cols, mask.rows) });
+    expectRejectedAndStillCorrect(
+        [&](LSDAdvance& d) {
+            std::vector<Vec4f> lines;
+            d.processSegments(std::vector<Vec4f>{ Vec4f(1, 1, 20, 20) }, lines, frame.size(), mask);
+        },
+        { "processSegments", "mask", cv::format("%dx%d", mask.cols, mask.rows) });
+}
+
+TEST(LSDAdvance_InputContract, non_continuous_mask_view_gives_the_lines_of_its_copy)
+{
+    const Mat img = buildingImage();
+    const Mat larger = quarterMask(Size(img.cols + 9, img.rows + 7));
+    const Mat view = larger(Rect(4, 3, img.cols, img.rows));
+    ASSERT_FALSE(view.isContinuous());
+    const std::vector<Vec4f> lines = detectFresh(img, view);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_NE(detectFresh(img), lines);
+    EXPECT_EQ(detectFresh(img, view.clone()), lines);
+    expectInsideImage(lines, img.size());
+}
+
+TEST(LSDAdvance_InputContract, umat_mask_gives_the_lines_of_the_mat)
+{
+    const Mat img = buildingImage();
+    const Mat mask = quarterMask(img.size());
+    EXPECT_EQ(detectFresh(img, mask), detectFresh(img.getUMat(ACCESS_READ), mask.getUMat(ACCESS_READ)));
+}
+
+TEST(LSDAdvance_InputContract, empty_mask_is_no_mask)
+{
+    const Mat img = buildingImage();
+    EXPECT_EQ(detectFresh(img), detectFresh(img, Mat()));
+}
+
 // Tiny images: no lines can be found, no error either.
 void expectTinyImageHandled(const Size& size)
 {

@@ -11,6 +11,7 @@
 #include "opencv2/imgcodecs.hpp"
 #include "opencv2/core/utils/filesystem.hpp"
 #include "../src/stages.hpp"
+#include "opencv_lsd_oracle.hpp"
 
 #include <functional>
 #include <numeric>

@@ -16,6 +16,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/lsd_advance.hpp>
 #include <opencv2/ximgproc.hpp>
+#include "../../src/opencv_lsd.hpp"  // OpenCV's LSD, in imgproc or in ximgproc
 
 #ifdef LSD_ADVANCE_HAVE_ELSED
 #include "ELSED.h"   // the optional peer, from its own folder (cmake -DLSD_ADVANCE_ELSED_DIR=<dir>)
@@ -92,8 +93,9 @@ inline LineMethod lineMethodOf(const std::string& name,
 //! (PL-VINS also sets log_eps 1: OpenCV's LSD reads it with LSD_REFINE_ADV only.)
 inline LineMethod plVinsMethod()
 {
-    const cv::Ptr<cv::LineSegmentDetector> lsd =
-        cv::createLineSegmentDetector(cv::LSD_REFINE_STD, 0.5, 0.6, 2.0, 22.5, 0, 0.6, 1024);
+    using namespace cv::ximgproc::lsda;
+    const cv::Ptr<OpenCVLineSegmentDetector> lsd =
+        createOpenCVLineSegmentDetector(kLsdRefineStd, 0.5, 0.6, 2.0, 22.5, 0, 0.6, 1024);
     return lineMethodOf("PL-VINS LSD", [lsd](const cv::Mat& gray, std::vector<cv::Vec4f>& lines) {
         std::vector<cv::Vec4f> all;
         lsd->detect(gray, all);
@@ -168,7 +170,7 @@ inline LineMethod makeLineMethod(const std::string& name, const cv::FileNode& pa
         CV_Error_(Error::StsBadArg, ("parameters apply to the lsdadvance method only, not to '%s'", name.c_str()));
     if (name == "lsd")
     {
-        const Ptr<LineSegmentDetector> lsd = createLineSegmentDetector();
+        const Ptr<ximgproc::lsda::OpenCVLineSegmentDetector> lsd = ximgproc::lsda::createOpenCVLineSegmentDetector();
         return lineMethodOf("LSD", [lsd](const Mat& g, std::vector<Vec4f>& l) { lsd->detect(g, l); });
     }
     if (name == "fld" || name == "fld_merge")

@@ -94,6 +94,27 @@ as without them). The responses are computed only when something uses them: dete
 (it orders by them; getLastResponses() returns them), after the minimum length, on the lines that
 pass it; processSegments() never.
 
+__Mask.__ detect() and processSegments() take an optional mask: CV_8UC1 of the image's size,
+zero where the image must be ignored (a car's hood, the robot's body, dynamic objects); another
+type or size throws cv::Exception naming what was received and what is accepted. Stricter than
+cv::line_descriptor::LSDDetector's test of the endpoints alone, no returned segment passes over a
+masked-out pixel, and no segment grows from or into masked-out pixels:
+- every base's segments are cut at the mask: each segment's part inside the image is sampled at
+  most 1 px apart (from one end to the other, both included; each sample reads the mask at its
+  nearest pixel), and each run of two or more samples on the mask is kept as a piece, from its
+  first sample to its last, in the segment's orientation (a segment wholly on the mask is kept
+  as it is; the pieces then pass stages 1-3 like any base segment);
+- BASE_FAST_LSD also reads the mask in its gradient pass: a pixel whose 2x2 gradient reads a
+  masked-out pixel has no defined gradient, so it neither seeds a region nor joins one (nor counts
+  as aligned in a rectangle), and a region never grows across a masked-out area. Below
+  LSDParams::scale 1 the mask is sub-sampled as the image is, each analysed pixel taking the mask
+  at the full-resolution pixel nearest its centre; the Gaussian before the sub-sampling still
+  mixes in up to 3 sigma of the pixels beside the mask (the cut then removes what crosses it);
+- stage 3 fuses two segments only when the gap between them along the line they fuse into is on
+  the mask, sampled as above: no merged line bridges a masked-out area.
+
+An all-zero mask gives no segment; a mask that is all non-zero gives the lines of no mask.
+
 __State.__ By default detect() is stateless, like LSD. The inter-frame modes of LengthFilterMode
 (PRESET_SEQUENCE) make consecutive calls a sequence; reset() and every setter start a new one. A
 sequence lives in one detector object: create it once and call it on every frame
@@ -158,7 +179,11 @@ public:
     left (EDLines' are turned round where needed). */
     enum BaseDetector
     {
-        BASE_LSD = 0,     //!< the LSD algorithm, OpenCV's cv::LineSegmentDetector, with LSDParams (at scale 1 after LSDParams::fullScaleSigma's Gaussian)
+        /** the LSD algorithm, OpenCV's cv::LineSegmentDetector (or cv::ximgproc::LineSegmentDetector,
+        where opencv#29349 moves it), with LSDParams (at scale 1 after
+        LSDParams::fullScaleSigma's Gaussian); on an OpenCV with neither, detect() throws
+        cv::Exception (StsNotImplemented) naming BASE_FAST_LSD (doc/building.md) */
+        BASE_LSD = 0,
         BASE_FLD = 1,     //!< cv::ximgproc::FastLineDetector with FLDParams
         BASE_EDLINES = 2, //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
         /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: with
@@ -247,8 +272,10 @@ public:
 
     /** @brief Detects line segments (with an inter-frame LengthFilterMode: the next frame).
     @param image 8-bit gray, BGR or BGRA image (see "Input").
-    @param lines Output N x 1 CV_32FC4: (x1, y1, x2, y2) per segment (see "Output"). */
-    CV_WRAP virtual void detect(InputArray image, OutputArray lines) = 0;
+    @param lines Output N x 1 CV_32FC4: (x1, y1, x2, y2) per segment (see "Output").
+    @param mask Optional CV_8UC1 mask of the image's size: no segment is detected on, nor passes
+    over, its zero pixels (see "Mask"). Default: none. */
+    CV_WRAP virtual void detect(InputArray image, OutputArray lines, InputArray mask = noArray()) = 0;
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     /** @brief Detects line segments as KeyLines for line_descriptor's LBD (@cite LBD).
@@ -259,8 +286,10 @@ public:
     first, after the minimum length and the budget), filled by linesToKeyLines() as
     cv::line_descriptor::LSDDetector fills octave 0 (`class_id` 0..N-1), except `response`:
     getLastResponses()' (computeLineResponses()), the length weighted by the squared contrast.
-    keepStrongestKeyLines() cuts them to a smaller budget. In Python: detectKeyLines(image) -> keylines. */
-    CV_WRAP_AS(detectKeyLines) void detect(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines);
+    keepStrongestKeyLines() cuts them to a smaller budget. In Python: detectKeyLines(image[, mask]) -> keylines.
+    @param mask As for detect(InputArray, OutputArray, InputArray). */
+    CV_WRAP_AS(detectKeyLines) void detect(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines,
+                                           InputArray mask = noArray());
 #endif
 
     /** @brief Runs stages 1-3 on segments from any detector; the call is a frame like detect().
@@ -268,8 +297,12 @@ public:
     @param lines Output like detect(), longest first (there is no image to compute responses on),
     after Params::minLineLength, Params::minLineLengthRatio (with imageSize only) and Params::maxLines.
     @param imageSize When not empty, the lines are clipped to this image as detect() clips them;
-    when empty (default), not clipped (a fused segment may reach a little beyond its pieces). */
-    CV_WRAP virtual void processSegments(InputArray segments, OutputArray lines, Size imageSize = Size()) = 0;
+    when empty (default), not clipped (a fused segment may reach a little beyond its pieces), or
+    clipped to the mask's size when there is a mask.
+    @param mask Optional CV_8UC1 mask of the image's size (imageSize when given): the segments are
+    cut at it and stage 3 fuses none across it, as in detect() (see "Mask"). Default: none. */
+    CV_WRAP virtual void processSegments(InputArray segments, OutputArray lines, Size imageSize = Size(),
+                                         InputArray mask = noArray()) = 0;
 
     /** @brief Draws segments on an image, as LineSegmentDetector::drawSegments does.
     @param image 8-bit image with 1 or 3 channels; a gray one is converted to BGR in place.
@@ -289,7 +322,9 @@ public:
     CV_WRAP virtual void getLastResponses(OutputArray responses) const = 0;
 
     /** @brief Returns the segments after each stage of the last call, before the clipping.
-    @param baseSegments Output CV_32FC4: the base detector's segments (processSegments' input).
+    Each output may be noArray(): only those asked for are filled.
+    @param baseSegments Output CV_32FC4: the base detector's segments (processSegments' input),
+    after the cut at the mask.
     @param filteredSegments Output CV_32FC4: stage 1's output (its input with LENGTH_FILTER_NONE),
     from baseSegments with FILTER_THEN_MERGE, from mergedSegments with MERGE_THEN_FILTER.
     @param groupLabels Output CV_32S, one per segment entering stage 2: -1 alone, else its group in

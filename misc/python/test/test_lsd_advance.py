@@ -207,6 +207,28 @@ class lsd_advance_test(NewOpenCVTests):
         self.assertEqual(as_set(detector.processSegments(base, None, size)), as_set(lines))
         self.assertEqual(as_set(detector.processSegments(base, imageSize=size)), as_set(lines))
 
+    def test_mask_keeps_lines_off_its_zeros_in_detect_and_detectKeyLines(self):
+        building = self.small_building()
+        detector = api.createLSDAdvance()
+        everything = detector.detect(building)
+        self.assertTrue(np.array_equal(detector.detect(building, None, np.full_like(building, 255)), everything))
+        self.assertIsNone(detector.detect(building, mask=np.zeros_like(building)))
+        mask = np.zeros_like(building)
+        mask[:, :building.shape[1] // 2] = 255  # the left half only
+        lines = detector.detect(building, mask=mask)
+        self.assertGreater(len(lines), 0)
+        self.assertLess(len(lines), len(everything))
+        self.assertTrue(np.all(np.round(lines[:, 0, [0, 2]]) < building.shape[1] // 2))
+        keylines = detector.detectKeyLines(building, mask)
+        self.assertEqual(len(keylines), len(lines))
+
+    def test_mask_of_another_type_or_size_raises_cv2_error(self):
+        building = self.small_building()
+        for mask in (np.zeros(building.shape, np.float32), np.zeros((8, 8), np.uint8)):
+            with self.subTest(shape=mask.shape, dtype=mask.dtype), self.assertRaises(cv.error) as info:
+                api.createLSDAdvance().detect(building, mask=mask)
+            self.assertIn("the mask must be CV_8UC1 of the image's size", str(info.exception))
+
     def test_computeLineResponses_is_length_times_squared_contrast_of_the_brighter_left(self):
         # A step of 150 gray levels under a 120 px segment pointing up (bright side on its left).
         step = np.full((200, 300), 50, np.uint8)
