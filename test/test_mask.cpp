@@ -220,7 +220,7 @@ TEST(LSDAdvance_Mask, processSegments_cuts_at_the_mask_and_fuses_nothing_across_
     EXPECT_EQ(kCollinearPieces, lines);
     // A strip across a piece cuts it; the two parts fuse no more.
     d->processSegments(std::vector<Vec4f>{ Vec4f(20, 50, 228, 50) }, lines, Size(260, 100), maskWithStrip(100, 104));
-    EXPECT_EQ((std::vector<Vec4f>{ Vec4f(20, 50, 99, 50), Vec4f(104, 50, 228, 50) }), lines);
+    EXPECT_EQ((std::vector<Vec4f>{ Vec4f(104, 50, 228, 50), Vec4f(20, 50, 99, 50) }), lines);  // longest first
 }
 
 TEST(LSDAdvance_Mask, every_base_keeps_lines_apart_across_a_masked_strip)
