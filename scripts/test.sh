@@ -55,38 +55,37 @@ if [ -n "${LSD_ADVANCE_DATA_DIR:-}" ]; then
   echo "LSD_ADVANCE_DATA_DIR=$LSD_ADVANCE_DATA_DIR"
 fi
 
-section "unit tests: opencv_test_lsd_advance"
-LOG="$BUILD/opencv_test_lsd_advance.log"
-test_rc=0
-( cd "$BUILD" && ./opencv_test_lsd_advance ) 2>&1 | tee "$LOG" || test_rc=${PIPESTATUS[0]}
-test_rc=${test_rc:-0}
+# Runs the gtest binary $1 of the build and adds its counts to passed / failed (a crash, or no
+# test run at all, counts as a failure); sets skipped from its summary.
+passed=0; failed=0; skipped=""
+gtest_rc=0
+run_gtest() {
+  local name="$1" log="$BUILD/$1.log" rc=0 n_passed n_failed n_skipped
+  ( cd "$BUILD" && "./$name" ) 2>&1 | tee "$log" || rc=${PIPESTATUS[0]}
+  rc=${rc:-0}
+  # gtest summary lines: "[  PASSED  ] N tests." / "[  FAILED  ] M tests, listed below:"
+  n_passed="$(sed -nE 's/^\[  PASSED  \] ([0-9]+) tests?\..*/\1/p' "$log" | tail -n1)"
+  n_failed="$(sed -nE 's/^\[  FAILED  \] ([0-9]+) tests?, listed below:.*/\1/p' "$log" | tail -n1)"
+  n_skipped="$(sed -nE 's/^\[  SKIPPED \] ([0-9]+) tests?, listed below:.*/\1/p' "$log" | tail -n1)"
+  n_passed="${n_passed:-0}"; n_failed="${n_failed:-0}"
+  if [ "$rc" -ne 0 ] && [ "$n_failed" -eq 0 ]; then
+    echo "ERROR: $name exited with $rc without a gtest failure summary (crash?)" >&2
+    n_failed=1
+  fi
+  if [ "$rc" -eq 0 ] && [ "$n_passed" -eq 0 ] && [ "$n_failed" -eq 0 ]; then
+    echo "ERROR: $name ran no test" >&2
+    rc=1
+  fi
+  passed=$((passed + n_passed)); failed=$((failed + n_failed))
+  if [ -n "$n_skipped" ]; then skipped=$(( ${skipped:-0} + n_skipped )); fi
+  if [ "$rc" -ne 0 ]; then gtest_rc=$rc; fi
+}
 
-# gtest summary lines: "[  PASSED  ] N tests." / "[  FAILED  ] M tests, listed below:"
-passed="$(sed -nE 's/^\[  PASSED  \] ([0-9]+) tests?\..*/\1/p' "$LOG" | tail -n1)"
-failed="$(sed -nE 's/^\[  FAILED  \] ([0-9]+) tests?, listed below:.*/\1/p' "$LOG" | tail -n1)"
-skipped="$(sed -nE 's/^\[  SKIPPED \] ([0-9]+) tests?, listed below:.*/\1/p' "$LOG" | tail -n1)"
-passed="${passed:-0}"; failed="${failed:-0}"
-if [ "$test_rc" -ne 0 ] && [ "$failed" -eq 0 ]; then
-  echo "ERROR: opencv_test_lsd_advance exited with $test_rc without a gtest failure summary (crash?)" >&2
-  failed=1
-fi
-if [ "$test_rc" -eq 0 ] && [ "$passed" -eq 0 ] && [ "$failed" -eq 0 ]; then
-  echo "ERROR: opencv_test_lsd_advance ran no test" >&2
-  test_rc=1
-fi
+section "unit tests: opencv_test_lsd_advance"
+run_gtest opencv_test_lsd_advance
 
 section "unit tests against LineSegmentDetector moved to ximgproc: opencv_test_lsd_advance_lsd_in_ximgproc"
-LAYOUT_LOG="$BUILD/opencv_test_lsd_advance_lsd_in_ximgproc.log"
-layout_rc=0
-( cd "$BUILD" && ./opencv_test_lsd_advance_lsd_in_ximgproc ) 2>&1 | tee "$LAYOUT_LOG" || layout_rc=${PIPESTATUS[0]}
-layout_rc=${layout_rc:-0}
-layout_passed="$(sed -nE 's/^\[  PASSED  \] ([0-9]+) tests?\..*/\1/p' "$LAYOUT_LOG" | tail -n1)"
-layout_failed="$(sed -nE 's/^\[  FAILED  \] ([0-9]+) tests?, listed below:.*/\1/p' "$LAYOUT_LOG" | tail -n1)"
-layout_passed="${layout_passed:-0}"; layout_failed="${layout_failed:-0}"
-if [ "$layout_rc" -ne 0 ] && [ "$layout_failed" -eq 0 ]; then layout_failed=1; fi
-if [ "$layout_passed" -eq 0 ] && [ "$layout_failed" -eq 0 ]; then layout_failed=1; fi
-passed=$((passed + layout_passed))
-failed=$((failed + layout_failed))
+run_gtest opencv_test_lsd_advance_lsd_in_ximgproc
 
 section "Python and sample program tests: scripts/test_python.sh"
 PY_LOG="$BUILD/python_tests.log"
@@ -123,6 +122,6 @@ if [ -n "$skipped" ]; then
 else
   echo "tests: $passed passed, $failed failed"
 fi
-if [ "$test_rc" -ne 0 ] || [ "$layout_rc" -ne 0 ] || [ "$py_rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$perf_rc" -ne 0 ]; then
+if [ "$gtest_rc" -ne 0 ] || [ "$py_rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$perf_rc" -ne 0 ]; then
   exit 1
 fi

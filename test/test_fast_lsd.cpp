@@ -107,19 +107,6 @@ struct Agreement
     double ourShare() const { return ours ? (double)oursByOpencv / ours : 1.0; }
 };
 
-// The LSD algorithm itself: the image read as it is at scale 1, every pixel seeds a region, no tiles.
-LSDAdvance::LSDParams lsdParams(int refine, double scale)
-{
-    LSDAdvance::LSDParams p;
-    p.refine = refine;
-    p.scale = scale;
-    p.fullScaleSigma = 0;
-    p.seedGradientRatio = 1.0;
-    p.seedAlignedNeighbours = 0;
-    p.tileHeight = 0;
-    return p;
-}
-
 // The module's own LSD alone: stage 0 of BASE_FAST_LSD.
 Ptr<lsda::BaseSegmentDetector> fastLsd(const LSDAdvance::LSDParams& p)
 {
@@ -224,7 +211,7 @@ void expectAgreement(const char* set, const Agreement& a, double atLeast)
 // The default set-up of LSDAdvance's base: full resolution, no refinement.
 TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_without_refinement_both_ways)
 {
-    const LSDAdvance::LSDParams p = lsdParams(LSD_REFINE_NONE, 1.0);
+    const LSDAdvance::LSDParams p = exactLsdParams(LSD_REFINE_NONE, 1.0);
     expectAgreement("yorkurban (51)", compareWithOpenCV(yorkUrbanImages(1), p), 0.98);
     expectAgreement("kitti_seq1 (every 5th frame)", compareWithOpenCV(kittiFrames(5), p), 0.98);
     expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.98);
@@ -233,7 +220,7 @@ TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_without_refinement_both_ways)
 // Both after the pre-smoothing of the defaults (LSDParams::fullScaleSigma), the same for both bases.
 TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_after_the_pre_smoothing_both_ways)
 {
-    LSDAdvance::LSDParams p = lsdParams(LSD_REFINE_NONE, 1.0);
+    LSDAdvance::LSDParams p = exactLsdParams(LSD_REFINE_NONE, 1.0);
     p.fullScaleSigma = LSDAdvance::LSDParams().fullScaleSigma;
     ASSERT_GT(p.fullScaleSigma, 0);
     expectAgreement("yorkurban (every 3rd)", compareWithOpenCV(yorkUrbanImages(3), p), 0.98);
@@ -243,7 +230,7 @@ TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_after_the_pre_smoothing_both_ways
 // OpenCV's default set-up: Gaussian sub-sampling to 0.8 and the refinement of sparse regions.
 TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_with_standard_refinement_at_scale_0_8_both_ways)
 {
-    const LSDAdvance::LSDParams p = lsdParams(LSD_REFINE_STD, 0.8);
+    const LSDAdvance::LSDParams p = exactLsdParams(LSD_REFINE_STD, 0.8);
     expectAgreement("yorkurban (every 3rd)", compareWithOpenCV(yorkUrbanImages(3), p), 0.95);
     expectAgreement("kitti_seq1 (every 10th frame)", compareWithOpenCV(kittiFrames(10), p), 0.95);
     expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.95);
@@ -257,7 +244,7 @@ TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_with_standard_refinement_at_scale
 // by OpenCV's, which keeps 7 % fewer).
 TEST(LSDAdvance_FastLsd, advanced_refinement_validates_like_OpenCV_LSD)
 {
-    const Agreement a = compareWithOpenCV(yorkUrbanImages(5), lsdParams(LSD_REFINE_ADV, 0.8));
+    const Agreement a = compareWithOpenCV(yorkUrbanImages(5), exactLsdParams(LSD_REFINE_ADV, 0.8));
     std::cout << "[ INFO ] LSD_REFINE_ADV: OpenCV " << a.opencv << " segments, ours " << a.ours
               << ", ours reproduced by OpenCV's " << a.ourShare() << ", OpenCV's by ours " << a.opencvShare()
               << std::endl;
@@ -274,8 +261,8 @@ TEST(LSDAdvance_FastLsd, advanced_refinement_validates_like_OpenCV_LSD)
 TEST(LSDAdvance_FastLsd, advanced_refinement_finds_almost_no_segment_in_noise)
 {
     // At OpenCV's default scale 0.8, whose Gaussian sub-sampling correlates neighbouring gradients.
-    Ptr<lsda::BaseSegmentDetector> withValidation = fastLsd(lsdParams(LSD_REFINE_ADV, 0.8)),
-                                   without = fastLsd(lsdParams(LSD_REFINE_NONE, 0.8));
+    Ptr<lsda::BaseSegmentDetector> withValidation = fastLsd(exactLsdParams(LSD_REFINE_ADV, 0.8)),
+                                   without = fastLsd(exactLsdParams(LSD_REFINE_NONE, 0.8));
     RNG rng(11);
     int validated = 0, unvalidated = 0;
     for (int i = 0; i < 5; i++)
@@ -298,7 +285,7 @@ TEST(LSDAdvance_FastLsd, advanced_refinement_keeps_a_clean_edge)
     Mat img(200, 300, CV_8UC1, Scalar(50));
     rectangle(img, Point(40, 60), Point(259, 199), Scalar(200), FILLED);
     std::vector<Vec4f> lines;
-    fastLsd(lsdParams(LSD_REFINE_ADV, 1.0))->detect(img, lines);
+    fastLsd(exactLsdParams(LSD_REFINE_ADV, 1.0))->detect(img, lines);
     int along = 0;  // segments on the top edge (y = 59.5), at least 150 px long
     for (const Vec4f& l : lines)
         along += std::abs(l[1] - 59.5f) < 1.f && std::abs(l[3] - 59.5f) < 1.f && std::abs(l[2] - l[0]) > 150.f;
@@ -350,7 +337,7 @@ TEST(LSDAdvance_FastLsd, seeds_above_a_gradient_level_give_the_first_segments_of
         for (int refine : { LSD_REFINE_NONE, LSD_REFINE_STD, LSD_REFINE_ADV })
         {
             SCOPED_TRACE(cv::format("%s, refine %d", path.c_str(), refine));
-            const LSDAdvance::LSDParams exact = lsdParams(refine, refine == LSD_REFINE_NONE ? 1.0 : 0.8);
+            const LSDAdvance::LSDParams exact = exactLsdParams(refine, refine == LSD_REFINE_NONE ? 1.0 : 0.8);
             const std::vector<Vec4f> all = fastLsdSegments(exact, img);
             const std::vector<Vec4f> strong = fastLsdSegments(withOptions(exact, 3.0, 0), img);
             ASSERT_GT(strong.size(), 0u);
@@ -381,7 +368,7 @@ TEST(LSDAdvance_FastLsd, faint_pixels_join_the_regions_of_strong_seeds)
                 longest = std::max(longest, (double)std::hypot(l[2] - l[0], l[3] - l[1]));
         return longest;
     };
-    const LSDAdvance::LSDParams exact = lsdParams(LSD_REFINE_NONE, 1.0);
+    const LSDAdvance::LSDParams exact = exactLsdParams(LSD_REFINE_NONE, 1.0);
     const std::vector<Vec4f> all = fastLsdSegments(exact, img), strong = fastLsdSegments(withOptions(exact, 3.0, 0), img);
     // Below a contrast of rho, the bottom 40 rows have no defined gradient.
     EXPECT_GT(longestNear(all, 59.5f), 250.0);
@@ -405,7 +392,7 @@ TEST(LSDAdvance_FastLsd, tiles_cut_the_rows_from_the_image_size_alone)
             for (int n : { 1, 3 })
             {
                 setNumThreads(n);
-                lsda::FastLsd lsd(withOptions(lsdParams(LSD_REFINE_NONE, 1.0), 1.0, tileHeight));
+                lsda::FastLsd lsd(withOptions(exactLsdParams(LSD_REFINE_NONE, 1.0), 1.0, tileHeight));
                 std::vector<Vec4f> lines;
                 lsd.detect(img, lines);
                 layouts.push_back(lsd.tileAreas());
@@ -439,7 +426,7 @@ TEST(LSDAdvance_FastLsd, segments_crossing_the_seams_come_out_whole)
     // gradient rows 206 to 210, across the seam between rows 207 and 208.
     img.rowRange(209, 401).colRange(250, 300).setTo(150);
     GaussianBlur(img, img, Size(5, 5), 1.0);
-    const LSDAdvance::LSDParams exact = lsdParams(LSD_REFINE_NONE, 1.0);
+    const LSDAdvance::LSDParams exact = exactLsdParams(LSD_REFINE_NONE, 1.0);
     const std::vector<Vec4f> untiled = fastLsdSegments(exact, img);
     lsda::FastLsd tiled(withOptions(exact, 1.0, 16));
     std::vector<Vec4f> lines;
@@ -475,7 +462,7 @@ TEST(LSDAdvance_FastLsd, segments_crossing_the_seams_come_out_whole)
 // the LSD algorithm (measured: 96 % of the segments reproduced both ways at 64 rows).
 TEST(LSDAdvance_FastLsd, tiles_reproduce_the_segments_without_tiles)
 {
-    const LSDAdvance::LSDParams exact = lsdParams(LSD_REFINE_NONE, 1.0);
+    const LSDAdvance::LSDParams exact = exactLsdParams(LSD_REFINE_NONE, 1.0);
     const Agreement a = compareOnRealImages(exact, withOptions(exact, 1.0, 64));
     std::cout << "[ INFO ] tiles of 64 rows: " << a.opencv << " segments without tiles, " << a.ours
               << " with; reproduced " << a.opencvShare() << " / " << a.ourShare() << std::endl;
@@ -489,7 +476,7 @@ TEST(LSDAdvance_FastLsd, tiles_reproduce_the_segments_without_tiles)
 // 90 % with two, 95 % of those of 30 px or more; the F on YorkUrban is the same).
 TEST(LSDAdvance_FastLsd, seeds_on_edges_keep_the_segments_of_every_seed)
 {
-    const LSDAdvance::LSDParams every = withOptions(lsdParams(LSD_REFINE_NONE, 1.0), 2.5, 0);
+    const LSDAdvance::LSDParams every = withOptions(exactLsdParams(LSD_REFINE_NONE, 1.0), 2.5, 0);
     for (int neighbours : { 1, 2 })
     {
         SCOPED_TRACE(neighbours);

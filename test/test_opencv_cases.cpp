@@ -109,18 +109,6 @@ struct Configuration
     int refine() const { return create ? create()->getLSDParams().refine : base.refine; }
 };
 
-// The LSD algorithm as createLineSegmentDetector(refine) sets it up (scale 0.8), in the fast base.
-LSDAdvance::LSDParams lsdAlgorithm(int refine)
-{
-    LSDAdvance::LSDParams p;
-    p.refine = refine;
-    p.scale = 0.8;
-    p.seedGradientRatio = 1;
-    p.seedAlignedNeighbours = 0;
-    p.tileHeight = 0;
-    return p;
-}
-
 std::vector<Configuration> configurations()
 {
     static_assert(LSDA_COUNT_OF(lsda::kPresets) == LSDAdvance::PRESET_FRONT_END + 1, "every preset is below");
@@ -130,7 +118,7 @@ std::vector<Configuration> configurations()
         all.push_back({ lsda::kPresets[preset], [preset] { return createLSDAdvance((LSDAdvance::Preset)preset); }, {} });
     all.push_back({ "fast base at the defaults", nullptr, LSDAdvance::LSDParams() });
     for (int refine = LSD_REFINE_NONE; refine <= LSD_REFINE_ADV; refine++)
-        all.push_back({ std::string("fast base as ") + lsda::kLsdRefinements[refine], nullptr, lsdAlgorithm(refine) });
+        all.push_back({ std::string("fast base as ") + lsda::kLsdRefinements[refine], nullptr, exactLsdParams(refine, 0.8) });  // as createLineSegmentDetector(refine)
     return all;
 }
 

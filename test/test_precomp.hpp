@@ -37,6 +37,20 @@ inline std::vector<Vec4f> asSet(std::vector<Vec4f> lines)
     return lines;
 }
 
+//! The LSD algorithm itself in LSDParams: the image read as it is at scale 1, every pixel seeds a
+//! region, no tiles (what OpenCV's LSD does with the same refine and scale).
+inline LSDAdvance::LSDParams exactLsdParams(int refine, double scale)
+{
+    LSDAdvance::LSDParams p;
+    p.refine = refine;
+    p.scale = scale;
+    p.fullScaleSigma = 0;
+    p.seedGradientRatio = 1.0;
+    p.seedAlignedNeighbours = 0;
+    p.tileHeight = 0;
+    return p;
+}
+
 //! A segment of the given length starting at (x, y) with the given directed angle (degrees).
 inline Vec4f segmentAt(double x, double y, double angleDeg, double length)
 {
