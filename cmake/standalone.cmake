@@ -19,6 +19,9 @@
 #   LSD_ADVANCE_SANITIZE=<list>  build the module's targets (library, tests, samples, apps; not ts) with
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
+#   LSD_ADVANCE_TEST_FILES=<list>  the test/*.cpp files (names) opencv_test_lsd_advance is built from;
+#                          empty (the default): all of them. scripts/sanitizers.sh builds the
+#                          ThreadSanitizer run from the threaded tests' files only.
 #   LSD_ADVANCE_FUZZ=ON    the libFuzzer target lsd_advance_fuzz (fuzz/; needs clang; scripts/fuzz.sh)
 #   LSD_ADVANCE_ELSED_DIR=<dir>  ELSED's sources (<dir>/src/ELSED.cpp; CI: ../shared/peers/elsed),
 #                          compiled from that folder as an optional peer: the apps get the method
@@ -43,6 +46,7 @@ option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
 option(BUILD_APPS "Build the benchmark apps apps/lsd_advance_bench/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
 set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
+set(LSD_ADVANCE_TEST_FILES "" CACHE STRING "test/*.cpp files (names) of opencv_test_lsd_advance (empty: all)")
 option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
 set(LSD_ADVANCE_ELSED_DIR "" CACHE PATH "ELSED source folder, built as an optional peer of the apps and perf suite (empty: none)")
 
@@ -212,6 +216,15 @@ if(BUILD_TESTS)
   foreach(_kind test perf)
     file(GLOB _srcs CONFIGURE_DEPENDS "${LSDA_ROOT}/${_kind}/*.cpp")
     file(GLOB _hdrs CONFIGURE_DEPENDS "${LSDA_ROOT}/${_kind}/*.hpp")
+    if(_kind STREQUAL "test" AND LSD_ADVANCE_TEST_FILES)
+      set(_srcs "")
+      foreach(_f ${LSD_ADVANCE_TEST_FILES})
+        if(NOT EXISTS "${LSDA_ROOT}/test/${_f}")
+          message(FATAL_ERROR "LSD_ADVANCE_TEST_FILES: test/${_f} does not exist")
+        endif()
+        list(APPEND _srcs "${LSDA_ROOT}/test/${_f}")
+      endforeach()
+    endif()
     if(NOT _srcs)
       message(STATUS "lsd_advance: no ${_kind}/*.cpp, opencv_${_kind}_lsd_advance not built")
       continue()

@@ -34,11 +34,12 @@ if [ -z "${OPENCV_SOURCE_DIR:-}" ]; then
   OPENCV_SOURCE_DIR="$(bash "$REPO/scripts/fetch_opencv_source.sh" | tail -n1)"
 fi
 
-# Configures and builds opencv_test_lsd_advance in $1 with the sanitizers $2.
+# Configures and builds opencv_test_lsd_advance in $1 with the sanitizers $2, from the test files $3
+# (a CMake list; empty: all).
 build_tests() {
   section "configure ($1, $2)"
-  cmake -S "$REPO" -B "$1" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTS=ON -DBUILD_EXAMPLES=OFF \
-    -DLSD_ADVANCE_SANITIZE="$2" -DOPENCV_SOURCE_DIR="$OPENCV_SOURCE_DIR"
+  cmake -S "$REPO" -B "$1" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTS=ON -DBUILD_EXAMPLES=OFF -DBUILD_APPS=OFF \
+    -DLSD_ADVANCE_SANITIZE="$2" -DLSD_ADVANCE_TEST_FILES="$3" -DOPENCV_SOURCE_DIR="$OPENCV_SOURCE_DIR"
   section "build opencv_test_lsd_advance ($2)"
   cmake --build "$1" -j"$JOBS" --target opencv_test_lsd_advance
 }
@@ -73,7 +74,7 @@ run_tests() {
   if [ "$rc" -ne 0 ] || [ "$failed" -ne 0 ] || [ "$reports" -ne 0 ]; then status=1; fi
 }
 
-build_tests "$BUILD" address,undefined
+build_tests "$BUILD" address,undefined ""
 # Stop at the first report, with a stack; leaks are reports too.
 export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="halt_on_error=1:abort_on_error=1:print_stacktrace=1"
@@ -85,8 +86,8 @@ run_tests "$BUILD" "${GTEST_FILTER:-*}:-LSDAdvance_LongSequence.*" "$BUILD/openc
 
 # The tests of the code that runs in parallel (the tiles of BASE_FAST_LSD, the gradient rows, the
 # stages on separate instances), on std::threads that ThreadSanitizer sees
-# (test/thread_sanitizer_backend.cpp), at 1, 2, 3 and 8 threads.
-build_tests "$TSAN_BUILD" thread
+# (test/thread_sanitizer_backend.cpp), at 1, 2, 3 and 8 threads: built from their files alone.
+build_tests "$TSAN_BUILD" thread "test_main.cpp;thread_sanitizer_backend.cpp;test_fast_lsd.cpp;test_robustness.cpp"
 # Exit (code 66) at the first report: an abort there hangs in ThreadSanitizer's own handler.
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$REPO/scripts/tsan_suppressions.txt:print_suppressions=1"
 section "threaded unit tests under TSan"
