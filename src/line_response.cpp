@@ -35,16 +35,19 @@ float grayAt(const Mat& gray, float x, float y)
 }
 
 // Sum over the samples p0 + k step (k < samples) of the positive part of gray(p + left) -
-// gray(p - left), at clamped coordinates, or directly when `inside`: every probe lies in
-// [0, cols - 2] x [0, rows - 2].
+// gray(p - left), directly when `inside` (every probe lies in [0, cols - 2] x [0, rows - 2]) or
+// when both probes of the sample do (grayAt then reads the same four pixels with the same
+// weights), at clamped coordinates otherwise: most samples of a segment near the border are inside.
 double positiveSteps(const Mat& gray, Point2f p0, Point2f step, Point2f left, int samples, bool inside)
 {
+    const float right = (float)(gray.cols - 2), bottom = (float)(gray.rows - 2);
+    const auto inCells = [&](Point2f q) { return q.x >= 0.f && q.x <= right && q.y >= 0.f && q.y <= bottom; };
     double sum = 0.0;
     for (int k = 0; k < samples; k++)
     {
         const Point2f p = p0 + (float)k * step, l = p + left, r = p - left;
         float across;
-        if (inside)
+        if (inside || (inCells(l) && inCells(r)))
         {
             const int lx = (int)l.x, ly = (int)l.y, rx = (int)r.x, ry = (int)r.y;
             across = bilinear(gray.ptr<uchar>(ly) + lx, 1, gray.step[0], l.x - (float)lx, l.y - (float)ly) -
