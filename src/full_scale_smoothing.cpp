@@ -64,7 +64,8 @@ void weightedSum(const uchar* centre, const uchar* const* before, const uchar* c
             lo += v_mul_wrap(beforeLo + afterLo, weight[k]);
             hi += v_mul_wrap(beforeHi + afterHi, weight[k]);
         }
-        v_store(out + x, v_pack((lo + half) >> 8, (hi + half) >> 8));
+        // The sums are below 2^16 and the results below 256: the signed pack needs no saturation.
+        v_store(out + x, v_pack_u(v_reinterpret_as_s16((lo + half) >> 8), v_reinterpret_as_s16((hi + half) >> 8)));
     }
 #endif
     for (; x < n; x++)
