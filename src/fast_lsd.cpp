@@ -34,6 +34,7 @@
 #include "fast_lsd.hpp"
 #include "opencv2/core/hal/hal.hpp"
 #include "opencv2/core/hal/intrin.hpp"
+#include <cstring>
 #include <functional>
 
 namespace cv {
@@ -600,7 +601,45 @@ int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
     if (!onEdges)
         return next;
     int* seeds = strong;
-    for (const int* candidate = strong; candidate < next; candidate++)
+    const int* candidate = strong;
+#if CV_SIMD128
+    // alignedNeighbours() four candidates at a time when its limit is 0 or more, in the same
+    // integers: a vector (u_x, u_y) as one 32-bit lane, its products with a neighbour's in one
+    // v_dotprod.
+    if (alignedDot >= 0)
+    {
+        const auto word = [&](int pixel) {
+            int w;
+            std::memcpy(&w, &level[pixel], sizeof w);
+            return w;
+        };
+        const v_int32x4 limit = v_setall_s32(alignedDot), axis = v_setall_s32(kStep), minusAxis = v_setall_s32(-kStep);
+        const v_int32x4 rowStep = v_setall_s32(stride), needed = v_setall_s32(seedAlignedNeighbours);
+        for (; candidate + 4 <= next; candidate += 4)
+        {
+            const int q[4] = { candidate[0], candidate[1], candidate[2], candidate[3] };
+            const v_int32x4 u(word(q[0]), word(q[1]), word(q[2]), word(q[3]));
+            const v_int32x4 ux = v_shr<16>(v_shl<16>(u)), uy = v_shr<16>(u);
+            // The step along the level line: (u > kStep) - (u < -kStep) per axis, from the masks (-1).
+            const v_int32x4 dx = (ux < minusAxis) - (ux > axis);
+            const v_int32x4 offset = ((uy > axis) & rowStep) - ((uy < minusAxis) & rowStep) + dx;
+            int off[4];
+            v_store(off, offset);
+            const v_int32x4 a(word(q[0] + off[0]), word(q[1] + off[1]), word(q[2] + off[2]), word(q[3] + off[3]));
+            const v_int32x4 b(word(q[0] - off[0]), word(q[1] - off[1]), word(q[2] - off[2]), word(q[3] - off[3]));
+            const v_int16x8 u16 = v_reinterpret_as_s16(u);
+            const v_int32x4 aligned = v_setzero_s32() - (v_dotprod(u16, v_reinterpret_as_s16(a)) > limit) -
+                                      (v_dotprod(u16, v_reinterpret_as_s16(b)) > limit);
+            const int keep = v_signmask(aligned >= needed);
+            for (int j = 0; j < 4; j++)
+            {
+                *seeds = q[j];
+                seeds += (keep >> j) & 1;
+            }
+        }
+    }
+#endif
+    for (; candidate < next; candidate++)
     {
         const int q = *candidate;
         *seeds = q;
