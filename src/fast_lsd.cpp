@@ -34,6 +34,7 @@
 #include "fast_lsd.hpp"
 #include "opencv2/core/hal/hal.hpp"
 #include "opencv2/core/hal/intrin.hpp"
+#include <cstring>
 #include <functional>
 
 namespace cv {
@@ -131,7 +132,9 @@ void gradientRow(const uchar* above, const uchar* below, int n, int threshold, f
 #if CV_SIMD128
     const v_int32x4 limit = v_setall_s32(threshold), one = v_setall_s32(1);
     const v_float32x4 unit = v_setall_f32(kUnit), half = v_setall_f32(0.5f);
-    v_int32x4 maxima = v_setzero_s32(), counts = v_setzero_s32();
+    // The maximum in float, exact (gx^2 + gy^2 <= 2 * 510^2 < 2^24): SSE2 has no 32-bit integer max.
+    v_float32x4 maxima = v_setzero_f32();
+    v_int32x4 counts = v_setzero_s32();
     for (; x + 8 <= n; x += 8)
     {
         const v_int16x8 a = v_reinterpret_as_s16(v_load_expand(above + x)), b = v_reinterpret_as_s16(v_load_expand(above + x + 1));
@@ -147,18 +150,19 @@ void gradientRow(const uchar* above, const uchar* below, int n, int threshold, f
         {
             const v_int32x4 n2 = v_dotprod(pairs[h], pairs[h]);
             const v_int32x4 isDefined = n2 > limit;
-            maxima = v_max(maxima, n2);
+            maxima = v_max(maxima, v_cvt_f32(n2));
             counts -= isDefined;
             const v_float32x4 root = v_sqrt(v_cvt_f32(n2 + ((n2 == v_setzero_s32()) & one)));
-            const v_float32x4 def = v_cvt_f32(isDefined & one);
-            const v_float32x4 scale = def * (unit / root);
+            // The loops' products by 1 or 0 as masks: x or +0 (x is positive), the same floats.
+            const v_float32x4 def = v_reinterpret_as_f32(isDefined);
+            const v_float32x4 scale = (unit / root) & def;
             ux[h] = v_trunc(v_cvt_f32(v_setzero_s32() - gy32[h]) * scale);
             uy[h] = v_trunc(v_cvt_f32(gx32[h]) * scale);
-            v_store(norm + x + 4 * h, root * (half * def));
+            v_store(norm + x + 4 * h, (root * half) & def);
         }
         v_store_interleave(level + 2 * x, v_pack(ux[0], ux[1]), v_pack(uy[0], uy[1]));
     }
-    maxNorm2 = v_reduce_max(maxima);
+    maxNorm2 = (int)v_reduce_max(maxima);
     count = v_reduce_sum(counts);
 #endif
     if (x < n)
@@ -342,7 +346,12 @@ inline int FastLsd::alignedNeighbours(int pixel) const
     const int dx = (u[0] > kStep) - (u[0] < -kStep), dy = (u[1] > kStep) - (u[1] < -kStep);
     const int offset = dy * stride + dx;
     const Vec2s a = level[pixel + offset], b = level[pixel - offset];
-    return (isFree(a) & (u[0] * a[0] + u[1] * a[1] > alignedDot)) + (isFree(b) & (u[0] * b[0] + u[1] * b[1] > alignedDot));
+    const int dotA = u[0] * a[0] + u[1] * a[1], dotB = u[0] * b[0] + u[1] * b[1];
+    // A neighbour that is not free, (0, 0), has a product of 0: below a limit of 0 or more (a
+    // tolerance under 90 deg) without a test of its own.
+    if (alignedDot >= 0)
+        return (dotA > alignedDot) + (dotB > alignedDot);
+    return (isFree(a) & (dotA > alignedDot)) + (isFree(b) & (dotB > alignedDot));
 }
 
 FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
@@ -592,7 +601,45 @@ int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
     if (!onEdges)
         return next;
     int* seeds = strong;
-    for (const int* candidate = strong; candidate < next; candidate++)
+    const int* candidate = strong;
+#if CV_SIMD128
+    // alignedNeighbours() four candidates at a time when its limit is 0 or more, in the same
+    // integers: a vector (u_x, u_y) as one 32-bit lane, its products with a neighbour's in one
+    // v_dotprod.
+    if (alignedDot >= 0)
+    {
+        const auto word = [&](int pixel) {
+            int w;
+            std::memcpy(&w, &level[pixel], sizeof w);
+            return w;
+        };
+        const v_int32x4 limit = v_setall_s32(alignedDot), axis = v_setall_s32(kStep), minusAxis = v_setall_s32(-kStep);
+        const v_int32x4 rowStep = v_setall_s32(stride), needed = v_setall_s32(seedAlignedNeighbours);
+        for (; candidate + 4 <= next; candidate += 4)
+        {
+            const int q[4] = { candidate[0], candidate[1], candidate[2], candidate[3] };
+            const v_int32x4 u(word(q[0]), word(q[1]), word(q[2]), word(q[3]));
+            const v_int32x4 ux = v_shr<16>(v_shl<16>(u)), uy = v_shr<16>(u);
+            // The step along the level line: (u > kStep) - (u < -kStep) per axis, from the masks (-1).
+            const v_int32x4 dx = (ux < minusAxis) - (ux > axis);
+            const v_int32x4 offset = ((uy > axis) & rowStep) - ((uy < minusAxis) & rowStep) + dx;
+            int off[4];
+            v_store(off, offset);
+            const v_int32x4 a(word(q[0] + off[0]), word(q[1] + off[1]), word(q[2] + off[2]), word(q[3] + off[3]));
+            const v_int32x4 b(word(q[0] - off[0]), word(q[1] - off[1]), word(q[2] - off[2]), word(q[3] - off[3]));
+            const v_int16x8 u16 = v_reinterpret_as_s16(u);
+            const v_int32x4 aligned = v_setzero_s32() - (v_dotprod(u16, v_reinterpret_as_s16(a)) > limit) -
+                                      (v_dotprod(u16, v_reinterpret_as_s16(b)) > limit);
+            const int keep = v_signmask(aligned >= needed);
+            for (int j = 0; j < 4; j++)
+            {
+                *seeds = q[j];
+                seeds += (keep >> j) & 1;
+            }
+        }
+    }
+#endif
+    for (; candidate < next; candidate++)
     {
         const int q = *candidate;
         *seeds = q;
@@ -952,7 +999,40 @@ void FastLsd::Regions::regionToRect(const FastLsd& lsd, double prec, double p, R
         dir = -dir;
 
     double lMin = 0, lMax = 0, wMin = 0, wMax = 0;
-    for (int i = 0; i < regionSize; i++)
+    int i = 0;
+#if CV_SIMD128_64F
+    // Four pixels at a time with the same double operations (w as a difference: -a b + c = c - a b
+    // exactly), the extremes in two lanes each; v_min(l, m) takes l only when l < m, as std::min(m, l).
+    {
+        const v_float64x2 x0 = v_setall_f64(cx), y0 = v_setall_f64(cy), ux = v_setall_f64(dir.x), uy = v_setall_f64(dir.y);
+        v_float64x2 lLow = v_setzero_f64(), lHigh = lLow, wLow = lLow, wHigh = lLow;
+        for (; i + 4 <= regionSize; i += 4)
+        {
+            v_int32x4 xs, ys;
+            v_load_deinterleave(&regionPixel[i].x, xs, ys);
+            const v_float64x2 ddx[2] = { v_cvt_f64(xs) - x0, v_cvt_f64_high(xs) - x0 };
+            const v_float64x2 ddy[2] = { v_cvt_f64(ys) - y0, v_cvt_f64_high(ys) - y0 };
+            for (int h = 0; h < 2; h++)
+            {
+                const v_float64x2 l = ddx[h] * ux + ddy[h] * uy, w = ddy[h] * ux - ddx[h] * uy;
+                lLow = v_min(l, lLow);
+                lHigh = v_max(l, lHigh);
+                wLow = v_min(w, wLow);
+                wHigh = v_max(w, wHigh);
+            }
+        }
+        double lanes[4][2];
+        v_store(lanes[0], lLow);
+        v_store(lanes[1], lHigh);
+        v_store(lanes[2], wLow);
+        v_store(lanes[3], wHigh);
+        lMin = std::min(lanes[0][0], lanes[0][1]);
+        lMax = std::max(lanes[1][0], lanes[1][1]);
+        wMin = std::min(lanes[2][0], lanes[2][1]);
+        wMax = std::max(lanes[3][0], lanes[3][1]);
+    }
+#endif
+    for (; i < regionSize; i++)
     {
         const double ddx = regionPixel[i].x - cx, ddy = regionPixel[i].y - cy;
         const double l = ddx * dir.x + ddy * dir.y;

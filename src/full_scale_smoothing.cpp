@@ -23,44 +23,69 @@ constexpr int kRowsPerStripe = 16;
 // Weights in 8-bit fixed point: each pass's sum to this.
 constexpr int kWeightSum = 256;
 
+// The largest kernel radius: that of the largest LSDParams::fullScaleSigma.
+constexpr int kMaxRadius = 16;
+
 // out[x] = (w[0] centre[x] + sum over k of w[k] (before[k - 1][x] + after[k - 1][x]) + 128) / 256
 // for x in [0, n): one pass of the Gaussian, 16 pixels at a time in 16 bits (at most 255 * 256).
+// The weights' vectors and the rows are copied into locals first: out may alias anything, and
+// would otherwise make them reloaded for every 16 pixels. kRadius > 0 is the radius known at
+// compile time (that of the default sigma), the loop over the weights then unrolled; 0 reads r.
+template <int kRadius>
 void weightedSum(const uchar* centre, const uchar* const* before, const uchar* const* after, int r, const ushort* w,
                  int n, uchar* out)
 {
     constexpr int kHalf = kWeightSum / 2;
+    const int radius = kRadius > 0 ? kRadius : r;
     int x = 0;
 #if CV_SIMD128
-    const v_uint16x8 half = v_setall_u16(kHalf), w0 = v_setall_u16(w[0]);
+    const uchar* above[kMaxRadius];
+    const uchar* below[kMaxRadius];
+    v_uint16x8 weight[kMaxRadius + 1];
+    weight[0] = v_setall_u16(w[0]);
+    for (int k = 1; k <= radius; k++)
+    {
+        above[k - 1] = before[k - 1];
+        below[k - 1] = after[k - 1];
+        weight[k] = v_setall_u16(w[k]);
+    }
+    const v_uint16x8 half = v_setall_u16(kHalf);
     for (; x + 16 <= n; x += 16)
     {
         v_uint16x8 lo, hi;
         v_expand(v_load(centre + x), lo, hi);
-        lo = v_mul_wrap(lo, w0);
-        hi = v_mul_wrap(hi, w0);
-        for (int k = 1; k <= r; k++)
+        lo = v_mul_wrap(lo, weight[0]);
+        hi = v_mul_wrap(hi, weight[0]);
+        for (int k = 1; k <= radius; k++)
         {
             v_uint16x8 beforeLo, beforeHi, afterLo, afterHi;
-            v_expand(v_load(before[k - 1] + x), beforeLo, beforeHi);
-            v_expand(v_load(after[k - 1] + x), afterLo, afterHi);
-            const v_uint16x8 weight = v_setall_u16(w[k]);
-            lo += v_mul_wrap(beforeLo + afterLo, weight);
-            hi += v_mul_wrap(beforeHi + afterHi, weight);
+            v_expand(v_load(above[k - 1] + x), beforeLo, beforeHi);
+            v_expand(v_load(below[k - 1] + x), afterLo, afterHi);
+            lo += v_mul_wrap(beforeLo + afterLo, weight[k]);
+            hi += v_mul_wrap(beforeHi + afterHi, weight[k]);
         }
-        v_store(out + x, v_pack((lo + half) >> 8, (hi + half) >> 8));
+        // The sums are below 2^16 and the results below 256: the signed pack needs no saturation.
+        v_store(out + x, v_pack_u(v_reinterpret_as_s16((lo + half) >> 8), v_reinterpret_as_s16((hi + half) >> 8)));
     }
 #endif
     for (; x < n; x++)
     {
         int sum = w[0] * centre[x];
-        for (int k = 1; k <= r; k++)
+        for (int k = 1; k <= radius; k++)
             sum += w[k] * (before[k - 1][x] + after[k - 1][x]);
         out[x] = (uchar)((sum + kHalf) >> 8);
     }
 }
 
-// The largest kernel radius: that of the largest LSDParams::fullScaleSigma.
-constexpr int kMaxRadius = 16;
+// Both passes share this: the radius of the default sigma (0.5 px) unrolled.
+void weightedSum(const uchar* centre, const uchar* const* before, const uchar* const* after, int r, const ushort* w,
+                 int n, uchar* out)
+{
+    if (r == 1)
+        weightedSum<1>(centre, before, after, r, w, n, out);
+    else
+        weightedSum<0>(centre, before, after, r, w, n, out);
+}
 
 } // namespace
 
