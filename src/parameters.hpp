@@ -32,12 +32,12 @@
       Range::enumOf(kLengthFilterModes), nullptr)                                                                    \
     X(int, lengthThresholdRule, LengthThresholdRule, LSDAdvance::LENGTH_THRESHOLD_CAPPED,                           \
       Range::enumOf(kLengthThresholdRules), "lengthThreshold")                                                       \
-    X(double, lengthThresholdScale, LengthThresholdScale, 1.0, Range::real(0, OPEN, 10, CLOSED), nullptr)          \
+    X(double, lengthThresholdScale, LengthThresholdScale, 0.95, Range::real(0, OPEN, 10, CLOSED), nullptr)          \
     X(bool, keepStrongSegments, KeepStrongSegments, false, Range::flag(), nullptr)                                  \
     X(int, stageOrder, StageOrder, LSDAdvance::MERGE_THEN_FILTER, Range::enumOf(kStageOrders), nullptr)           \
     X(double, angleBinWidth, AngleBinWidth, 10.0, Range::real(1, CLOSED, 90, CLOSED, " deg"), nullptr)             \
     X(int, angleBinning, AngleBinning, LSDAdvance::ANGLE_BINS_NEIGHBOURS, Range::enumOf(kAngleBinnings), nullptr)  \
-    X(double, endpointDistance, EndpointDistance, 10.0, Range::real(0.1, CLOSED, 200, CLOSED, " px"), nullptr)     \
+    X(double, endpointDistance, EndpointDistance, 15.0, Range::real(0.1, CLOSED, 200, CLOSED, " px"), nullptr)     \
     X(int, mergeStrategy, MergeStrategy, LSDAdvance::MERGE_LONGEST_FIRST, Range::enumOf(kMergeStrategies), nullptr) \
     X(double, baselineRatio, BaselineRatio, 0.8, Range::real(0, OPEN, 1, CLOSED), nullptr)                        \
     X(double, directionWeight, DirectionWeight, 0.4, Range::real(0, CLOSED, 1, CLOSED), nullptr)                  \

@@ -40,6 +40,14 @@ Point2d unitDirection(const Vec4f& s)
     return len > 0 ? d * (1.0 / len) : Point2d(1, 0);
 }
 
+// The second moment (xx, xy, yy) about c of a segment of length l as a uniform mass along it:
+// l (d d^T / 12 + (m - c)(m - c)^T), with d its vector and m its centre.
+Vec3d secondMoment(const Vec4f& s, double l, const Point2d& c)
+{
+    const Point2d d = endOf(s) - startOf(s), o = (startOf(s) + endOf(s)) * 0.5 - c;
+    return l * Vec3d(d.x * d.x / 12.0 + o.x * o.x, d.x * d.y / 12.0 + o.x * o.y, d.y * d.y / 12.0 + o.y * o.y);
+}
+
 // Whether the gap between two segments along the line they fuse into (from the end of the
 // projection of one on it to the start of the other's; none when they overlap) is on the mask.
 bool gapInMask(const Mat& mask, const Vec4f& base, const Vec4f& seg)
@@ -378,15 +386,22 @@ Vec4f fuseSegments(const Vec4f& baseline, const Vec4f& other)
     const Point2d m2 = (startOf(other) + endOf(other)) * 0.5;
     const Point2d centre = l1 + l2 > 0 ? (l1 * m1 + l2 * m2) * (1.0 / (l1 + l2)) : m1;
 
-    // Directions as unit vectors oriented like the baseline: a mean of angles would break at
-    // the 0/180 wrap.
+    // The least-squares line of the two as uniform masses: the principal axis of their second
+    // moments about the centre, oriented like the baseline. Parallel runs one step apart, the
+    // pieces of an aliased edge, fuse along the line through them; the mean of their directions
+    // would keep the runs' direction, and the next run would fall outside the perpendicular gate.
+    const Vec3d moments = secondMoment(baseline, l1, centre) + secondMoment(other, l2, centre);
     const Point2d u1 = unitDirection(baseline);
-    Point2d u2 = unitDirection(other);
-    if (u2.dot(u1) < 0)
-        u2 = -u2;
-    Point2d dir = l1 * u1 + l2 * u2;
+    // The eigenvector of the larger eigenvalue, from whichever of its two forms is longer: exact
+    // along an axis (a border's pieces stay on it).
+    const double half = 0.5 * (moments[0] - moments[2]);
+    const double lambda = 0.5 * (moments[0] + moments[2]) + std::sqrt(half * half + moments[1] * moments[1]);
+    const Point2d fromXy(moments[1], lambda - moments[0]), fromYy(lambda - moments[2], moments[1]);
+    Point2d dir = fromXy.dot(fromXy) > fromYy.dot(fromYy) ? fromXy : fromYy;
     const double dirNorm = norm(dir);
     dir = dirNorm > 0 ? dir * (1.0 / dirNorm) : u1;
+    if (dir.dot(u1) < 0)
+        dir = -dir;
 
     const Point2d ends[4] = { startOf(baseline), endOf(baseline), startOf(other), endOf(other) };
     double tMin = 0, tMax = 0;

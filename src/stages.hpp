@@ -283,7 +283,9 @@ CV_EXPORTS SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& o
 //! similarityTerms(): a change of either must change the bound.
 CV_EXPORTS double similarityScore(const SimilarityTerms& terms, const MergingParams& params);
 
-//! Fuses other into baseline; the result keeps the baseline's orientation.
+//! Fuses other into baseline: the least-squares line of the two (as uniform masses along their
+//! lengths) through their length-weighted centre, spanning the projections of the four
+//! endpoints; the result keeps the baseline's orientation.
 CV_EXPORTS Vec4f fuseSegments(const Vec4f& baseline, const Vec4f& other);
 
 //! Buffers of stage 3, reused from group to group and call to call (segment_merging.hpp).

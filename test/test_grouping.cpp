@@ -45,7 +45,7 @@ TEST(LSDAdvance_Grouping, endpoints_closer_than_the_distance_connect)
         segmentAt(59, 0, 0, 50),    // 9 px gap: adjacent
         segmentAt(120, 0, 0, 50),   // 11 px gap from the previous one: not adjacent
     };
-    const std::vector<int> id = groupIds(segments, groupingParams(true));
+    const std::vector<int> id = groupIds(segments, groupingParams(true, 10.0));
     EXPECT_EQ(id[0], id[1]);
     EXPECT_NE(id[1], id[2]);
     const std::vector<int> wide = groupIds(segments, groupingParams(true, 12.0));
@@ -62,7 +62,7 @@ TEST(LSDAdvance_Grouping, endpoints_spread_far_apart_connect_by_the_same_rule)
         segmentAt(9e6 + 61, 9e6, 0, 50),    // 11 px gap: not adjacent
         segmentAt(9e6 - 8, 9e6 + 3, 0, 5),  // its end 3 px under the start of segment 2
     };
-    const std::vector<int> id = groupIds(segments, groupingParams(true));
+    const std::vector<int> id = groupIds(segments, groupingParams(true, 10.0));
     EXPECT_EQ(id[0], id[1]);
     EXPECT_NE(id[1], id[2]);
     EXPECT_NE(id[2], id[3]);

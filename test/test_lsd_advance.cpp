@@ -183,7 +183,7 @@ TEST(LSDAdvance_Detect, stats_report_every_stage_in_the_paper_order)
     const LSDAdvanceStats stats = detector->getLastStats();
     const std::vector<Vec4f> base = detectBase(img);
     EXPECT_EQ((int)base.size(), stats.baseSegments);
-    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED), stats.minLength, 1e-9);
+    EXPECT_NEAR(lsda::adaptiveMinLength(base, detector->getLengthThresholdScale(), LSDAdvance::LENGTH_THRESHOLD_CAPPED), stats.minLength, 1e-9);
     EXPECT_EQ(1.0, stats.alpha);
     std::vector<Vec4f> kept;
     lsda::keepLongOrStrong(base, std::vector<float>(), stats.minLength, 0.0, kept);
@@ -220,7 +220,7 @@ TEST(LSDAdvance_Detect, stats_report_every_stage_when_merging_first)
     const LSDAdvanceStats stats = detector->getLastStats();
     const std::vector<Vec4f> base = detectBase(img);
     EXPECT_EQ((int)base.size(), stats.baseSegments);
-    EXPECT_NEAR(lsda::adaptiveMinLength(base, 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED), stats.minLength, 1e-9);
+    EXPECT_NEAR(lsda::adaptiveMinLength(base, detector->getLengthThresholdScale(), LSDAdvance::LENGTH_THRESHOLD_CAPPED), stats.minLength, 1e-9);
     EXPECT_LT(stats.mergedSegments, stats.baseSegments);
     EXPECT_LT(stats.filteredSegments, stats.mergedSegments);
     EXPECT_EQ((int)lines.size(), stats.filteredSegments);

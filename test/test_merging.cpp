@@ -104,12 +104,24 @@ TEST(LSDAdvance_Fusion, collinear_pieces_fuse_into_their_span)
 
 TEST(LSDAdvance_Fusion, line_passes_through_the_length_weighted_centre)
 {
-    // Base along y = 0 (length 100), piece along y = 0.6 (length 50): centre y = 0.2.
+    // Base along y = 0 (length 100, centre x 50), piece along y = 0.6 (length 50, centre x 135):
+    // the centre (235 / 3, 0.2) is on the fused line, which spans x 0 to 160.
     const Vec4f fused = lsda::fuseSegments(Vec4f(0, 0, 100, 0), Vec4f(110, 0.6f, 160, 0.6f));
-    EXPECT_NEAR(0.2, fused[1], 1e-4);
-    EXPECT_NEAR(0.2, fused[3], 1e-4);
-    EXPECT_NEAR(0.0, fused[0], 1e-4);
-    EXPECT_NEAR(160.0, fused[2], 1e-4);
+    const double t = (235.0 / 3.0 - fused[0]) / (fused[2] - fused[0]);
+    EXPECT_NEAR(0.2, fused[1] + t * (fused[3] - fused[1]), 1e-4);
+    EXPECT_NEAR(0.0, fused[0], 1e-2);
+    EXPECT_NEAR(160.0, fused[2], 1e-2);
+}
+
+TEST(LSDAdvance_Fusion, parallel_runs_a_step_apart_fuse_along_the_least_squares_line)
+{
+    // Two runs of 8 px, the second 1 px below and 8 px on, as on an aliased edge of slope 1/8.
+    // Their second moments about the centre (8, 0.5) as uniform masses: xx = 1024 / 3, xy = 32,
+    // yy = 4, whose principal axis has the slope tan(atan2(64, 1012 / 3) / 2) = 0.0940; the mean
+    // of their directions would be 0.
+    const Vec4f fused = lsda::fuseSegments(Vec4f(0, 0, 8, 0), Vec4f(8, 1, 16, 1));
+    EXPECT_NEAR(std::tan(0.5 * std::atan2(64.0, 1012.0 / 3.0)), (fused[3] - fused[1]) / (fused[2] - fused[0]), 1e-4);
+    EXPECT_NEAR(0.5, 0.5 * (fused[1] + fused[3]), 1e-4);
 }
 
 TEST(LSDAdvance_Fusion, keeps_the_baseline_orientation)
@@ -121,15 +133,17 @@ TEST(LSDAdvance_Fusion, keeps_the_baseline_orientation)
     expectSegmentNear(Vec4f(150, 0, 0, 0), reversed, 1e-4);
 }
 
-TEST(LSDAdvance_Fusion, direction_is_the_length_weighted_mean_across_the_0_180_wrap)
+TEST(LSDAdvance_Fusion, direction_has_no_0_180_wrap)
 {
     // Directed angles 179.5 and 180.5 deg (undirected 179.5 and 0.5): a naive mean of the
-    // undirected angles would give 90 deg; the weighted mean direction is 179.5 + 1/3 deg.
+    // undirected angles would give 90 deg; the fused line lies between the two.
     const Vec4f base = segmentAt(100, 50, 179.5, 100);
     const Vec4f piece = segmentAt(base[2] - 3, base[3], 180.5, 50);
     const Vec4f fused = lsda::fuseSegments(base, piece);
-    const double angle = std::atan2(fused[3] - fused[1], fused[2] - fused[0]) * 180.0 / CV_PI;
-    EXPECT_NEAR(179.5 + 1.0 / 3.0, angle, 0.01);
+    double angle = std::atan2(fused[3] - fused[1], fused[2] - fused[0]) * 180.0 / CV_PI;
+    angle += angle < 0 ? 360.0 : 0.0;
+    EXPECT_GT(angle, 179.5);
+    EXPECT_LT(angle, 180.5);
     EXPECT_LT(fused[2], fused[0]);  // still points like the baseline (-x)
 }
 
@@ -147,6 +161,22 @@ TEST(LSDAdvance_MergingBaselines, long_edge_broken_into_collinear_pieces_becomes
     ASSERT_EQ(1u, merged.size());
     const Vec4f truth(segments[0][0], segments[0][1], segments[3][2], segments[3][3]);
     expectSegmentNear(truth, merged[0], 1.0);
+}
+
+TEST(LSDAdvance_MergingLongestFirst, the_runs_of_an_aliased_edge_become_one_segment)
+{
+    // What the base finds on a line drawn without anti-aliasing at slope 1/8: runs of 6 px along
+    // x, each 1 px below the one before (issue 21's rotated rectangles). With the defaults they
+    // fuse into one segment of the edge's slope; the mean of their directions kept the runs'
+    // direction, 0, so that the third run fell outside the perpendicular gate.
+    std::vector<Vec4f> runs;
+    for (int k = 0; k < 10; k++)
+        runs.push_back(Vec4f(8.f * k + 1, (float)k, 8.f * k + 7, (float)k));
+    const std::vector<Vec4f> merged = groupAndMerge(runs, lsda::MergingParams());
+    ASSERT_EQ(1u, merged.size());
+    EXPECT_NEAR(1.0 / 8.0, (merged[0][3] - merged[0][1]) / (merged[0][2] - merged[0][0]), 0.005);
+    EXPECT_NEAR(1.0, std::min(merged[0][0], merged[0][2]), 0.1);
+    EXPECT_NEAR(79.0, std::max(merged[0][0], merged[0][2]), 0.1);
 }
 
 TEST(LSDAdvance_MergingBaselines, pieces_straddling_a_bin_edge_merge_with_neighbour_bins)

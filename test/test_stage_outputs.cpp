@@ -111,7 +111,7 @@ TEST(LSDAdvance_StageOutputs, filtered_segments_are_the_long_or_strong_ones_with
             std::vector<float> baseResponses, responses;
             lsda::lineResponses(frame, o.base, baseResponses);
             lsda::lineResponses(frame, input, responses);
-            EXPECT_NEAR(stats.alpha * lsda::adaptiveMinResponse(baseResponses, 1.0, d.getLengthThresholdRule()),
+            EXPECT_NEAR(stats.alpha * lsda::adaptiveMinResponse(baseResponses, d.getLengthThresholdScale(), d.getLengthThresholdRule()),
                         stats.minResponse, 1e-6 * stats.minResponse);
             lsda::keepLongOrStrong(input, responses, stats.minLength, stats.minResponse, expected);
             EXPECT_GT(expected.size(), longOnes.size());  // short strong segments were kept

@@ -217,12 +217,12 @@ public:
         CV_PROP_RW int baseDetector;            //!< stage 0, one of BaseDetector. Default BASE_FAST_LSD.
         CV_PROP_RW int lengthFilterMode;        //!< stage 1, one of LengthFilterMode. Default LENGTH_FILTER_ADAPTIVE.
         CV_PROP_RW int lengthThresholdRule;     //!< stage 1, one of LengthThresholdRule. Default LENGTH_THRESHOLD_CAPPED.
-        CV_PROP_RW double lengthThresholdScale; //!< factor on stage 1's threshold (below 1 keeps shorter segments), in (0, 10]. Default 1.
+        CV_PROP_RW double lengthThresholdScale; //!< factor on stage 1's threshold (below 1 keeps shorter segments), in (0, 10]. Default 0.95.
         CV_PROP_RW bool keepStrongSegments;     //!< stage 1 also keeps a shorter segment whose response (computeLineResponses) reaches the same rule on the base segments' responses: short lines of high contrast, which LBD matches again; costs the responses (processSegments: by length alone; on in PRESET_SEQUENCE). Default false.
         CV_PROP_RW int stageOrder;              //!< one of StageOrder. Default MERGE_THEN_FILTER.
         CV_PROP_RW double angleBinWidth;        //!< stage 2's angle bins, degrees, in [1, 90]. Default 10.
         CV_PROP_RW int angleBinning;            //!< stage 2, one of AngleBinning. Default ANGLE_BINS_NEIGHBOURS.
-        CV_PROP_RW double endpointDistance;     //!< stage 2: segments with two endpoints closer than this are adjacent, pixels, in [0.1, 200]. Default 10.
+        CV_PROP_RW double endpointDistance;     //!< stage 2: segments with two endpoints closer than this are adjacent, pixels, in [0.1, 200]. Default 15.
         CV_PROP_RW int mergeStrategy;           //!< stage 3, one of MergeStrategy. Default MERGE_LONGEST_FIRST.
         CV_PROP_RW double baselineRatio;        //!< MERGE_BASELINES: baselines are at least this share of the longest, in (0, 1]. Default 0.8.
         CV_PROP_RW double directionWeight;      //!< weight of the score's direction term, in [0, 1]. Default 0.4.
