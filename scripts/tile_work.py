@@ -8,12 +8,14 @@ The work of BASE_FAST_LSD's tiles, in instructions (valgrind's callgrind, which 
 on a busy machine), and from it an estimate of the time of the defaults at 1, 2, 4 and 8 threads
 (doc/performance.md, "Threads"). Per image set: every fifth image of the folder (at most five),
 detected with the defaults by lsd_advance_benchmark at one thread, twice under callgrind: once for
-the instructions of the whole detection, of the gradient pass (parallel over rows) and of the
-tiles (parallel over tiles), once with a dump at the start of each tile, for each tile's own.
-The estimate for T threads adds, per image, the serial rest, the gradient pass divided by T and
-the tiles scheduled in order each onto the first free thread; it counts no cost of the threads
-themselves. Prints Markdown: one table of the shares and estimates, one of the instructions of
-each tile (mean over the images). Needs valgrind and callgrind_annotate.
+the instructions of the whole detection, of the work parallel over many small tasks (the
+smoothing and the gradient pass over rows, the rectangles of the regions joined across the
+seams, stage 3 over groups, the line responses over segments) and of the tiles (parallel over
+tiles), once with a dump at the start of each tile, for each tile's own. The estimate for T
+threads adds, per image, the serial rest, the small tasks' work divided by T and the tiles
+scheduled in order each onto the first free thread; it counts no cost of the threads themselves.
+Prints Markdown: one table of the shares and estimates, one of the instructions of each tile
+(mean over the images). Needs valgrind and callgrind_annotate.
 """
 
 import glob
@@ -24,7 +26,9 @@ import sys
 import tempfile
 
 DETECT = "*LSDAdvanceImpl::detect*"
-GRADIENT = "FastLsd::GradientRows::operator()"
+# The bodies of parallel_for_ over many small tasks.
+SMALL_TASKS = ("FullScaleSmoothing::SmoothedRows::operator()", "FastLsd::GradientRows::operator()",
+               "FastLsd::JoinedRegions::operator()", "GroupTasks::operator()", "SegmentResponses::operator()")
 TILES = "FastLsd::TileRegions::operator()"
 THREADS = (1, 2, 4, 8)
 
@@ -43,7 +47,7 @@ def summary(path):
     raise RuntimeError("no summary in " + path)
 
 
-def inclusive(path, names):
+def inclusive(path, names, optional=()):
     text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", path], check=True,
                           capture_output=True, text=True).stdout
     found = {}
@@ -54,7 +58,7 @@ def inclusive(path, names):
         for name in names:
             if name in m.group(2) and name not in found:
                 found[name] = int(m.group(1).replace(",", ""))
-    missing = [n for n in names if n not in found]
+    missing = [n for n in names if n not in found and n not in optional]
     if missing:
         raise RuntimeError("callgrind_annotate lists no %s in %s" % (", ".join(missing), path))
     return found
@@ -78,7 +82,7 @@ def measure(benchmark, name, folder, work):
         os.symlink(os.path.abspath(path), os.path.join(data, "image_l", "%06d%s" % (i, os.path.splitext(path)[1])))
     whole = os.path.join(work, name + ".whole")
     callgrind(benchmark, data, whole, ["--toggle-collect=" + DETECT])
-    counts = inclusive(whole, ["LSDAdvanceImpl::detect", GRADIENT, TILES])
+    counts = inclusive(whole, ["LSDAdvanceImpl::detect", TILES] + list(SMALL_TASKS), optional=SMALL_TASKS)
     split = os.path.join(work, name + ".tiles")
     callgrind(benchmark, data, split, ["--collect-atstart=no", "--toggle-collect=*" + TILES + "*",
                                        "--dump-before=*FastLsd::orderTile*"])
@@ -89,14 +93,15 @@ def measure(benchmark, name, folder, work):
         raise RuntimeError("%d tiles for %d images" % (len(tiles), len(images)))
     perImage = len(tiles) // len(images)
     frames = [tiles[k * perImage:(k + 1) * perImage] for k in range(len(images))]
-    total, gradient, tileSum = counts["LSDAdvanceImpl::detect"], counts[GRADIENT], counts[TILES]
-    serial = total - gradient - tileSum
+    total, tileSum = counts["LSDAdvanceImpl::detect"], counts[TILES]
+    smallTasks = sum(counts.get(name, 0) for name in SMALL_TASKS)
+    serial = total - smallTasks - tileSum
     times = {}
     for t in THREADS:
-        times[t] = sum(serial / len(images) + gradient / len(images) / t + makespan(f, t) for f in frames)
+        times[t] = sum(serial / len(images) + smallTasks / len(images) / t + makespan(f, t) for f in frames)
     means = [sum(f[k] for f in frames) / len(frames) for k in range(perImage)]
     return dict(name=name, images=len(images), total=total / len(images), serial=serial / total,
-                gradient=gradient / total, tiles=tileSum / total, largest=max(max(f) / sum(f) for f in frames),
+                smallTasks=smallTasks / total, tiles=tileSum / total, largest=max(max(f) / sum(f) for f in frames),
                 times=times, means=means)
 
 
@@ -106,12 +111,12 @@ def main():
     benchmark = os.path.join(sys.argv[1], "lsd_advance_benchmark")
     with tempfile.TemporaryDirectory() as work:
         results = [measure(benchmark, *arg.split("=", 1), work) for arg in sys.argv[2:]]
-    print("| images | frames | instructions / frame (M) | serial | gradient | tiles | largest tile / tiles |"
+    print("| images | frames | instructions / frame (M) | serial | small tasks | tiles | largest tile / tiles |"
           + "".join(" %d threads / 1 |" % t for t in THREADS[1:]))
     print("|---|---:|---:|---:|---:|---:|---:|" + "---:|" * (len(THREADS) - 1))
     for r in results:
         print("| %s | %d | %.1f | %.3f | %.3f | %.3f | %.3f |" % (r["name"], r["images"], r["total"] / 1e6, r["serial"],
-                                                                  r["gradient"], r["tiles"], r["largest"])
+                                                                  r["smallTasks"], r["tiles"], r["largest"])
               + "".join(" %.2f |" % (r["times"][t] / r["times"][1]) for t in THREADS[1:]))
     print()
     width = max(len(r["means"]) for r in results)

@@ -61,6 +61,11 @@ constexpr size_t kCompactionSlack = 4;
 
 // Rows of the image whose gradients are computed by one task of the parallel loop.
 constexpr int kRowsPerStripe = 16;
+// Pixels of joined regions per task, at least: most joined regions are small, and a task of a
+// few costs the pool more than their rectangles.
+constexpr int kJoinedPixelsPerTask = 2048;
+// What a task found for a joined region: no segment, a segment, or none yet (it grows again).
+enum JoinedOutcome : char { kRejected, kValid, kGrowsAgain };
 
 // How many seeds ahead the neighbourhood of a seed is fetched into the cache.
 constexpr int kPrefetchDistance = 4;
@@ -308,14 +313,21 @@ public:
     //! Validates the current region (regionIndex, regionVector, regionSize, regionSum), of at least
     //! minRegionSize pixels, and appends its segment when it is valid.
     void emitRegion(FastLsd& lsd);
+    //! emitRegion for a region that is not grown again (dense enough at its first rectangle, or
+    //! no refinement), which touches none of the detector's pixels; false, and nothing done, for
+    //! one that would be.
+    bool emitUnlessRegrown(const FastLsd& lsd);
 
 private:
     void growRegion(FastLsd& lsd, int seed, float cosUnit);
     template <bool acute, bool mayOutgrow, bool bounded> void growRegionFrom(FastLsd& lsd, int seed, float cosUnit);
     bool releaseAtSeams(const FastLsd& lsd, Tile& tile);
     void regionToRect(const FastLsd& lsd, double prec, double p, Rect& rect);
+    //! Appends the segment of rect once refined, when it is valid.
+    void emitRect(const FastLsd& lsd, Rect& rect);
+    double density(const Rect& rect) const;
     bool refineRegion(FastLsd& lsd, Rect& rect);
-    bool shrinkRegionRadius(FastLsd& lsd, Rect& rect, double density);
+    bool shrinkRegionRadius(FastLsd& lsd, Rect& rect, double currentDensity);
     double improveRect(const FastLsd& lsd, Rect& rect);
 
     std::vector<Point> regionPixel;
@@ -414,6 +426,39 @@ public:
             Tile& tile = lsd.tiles[t];
             lsd.orderTile(tile);
             tile.regions.detect(lsd, tile.seamAbove || tile.seamBelow ? &tile : nullptr);
+        }
+    }
+
+private:
+    FastLsd& lsd;
+};
+
+// The joined regions that are not grown again, a task per range of them, each with its own
+// region buffers; the pixels of the detector are only read.
+class FastLsd::JoinedRegions CV_FINAL : public ParallelLoopBody
+{
+public:
+    explicit JoinedRegions(FastLsd& detector) : lsd(detector) {}
+    void operator()(const Range& range) const CV_OVERRIDE
+    {
+        for (int t = range.start; t < range.end; t++)
+        {
+            Regions& region = *lsd.joiningTasks[t];
+            region.segments.clear();
+            for (int i = lsd.joinedTaskStart[t]; i < lsd.joinedTaskStart[t + 1]; i++)
+            {
+                lsd.gatherJoinedRegion(lsd.joinedRoots[i], region);
+                const size_t found = region.segments.size();
+                if (!region.emitUnlessRegrown(lsd))
+                    lsd.joinedOutcome[i] = kGrowsAgain;
+                else if (region.segments.size() > found)
+                {
+                    lsd.joinedOutcome[i] = kValid;
+                    lsd.joinedSegment[i] = region.segments.back();
+                }
+                else
+                    lsd.joinedOutcome[i] = kRejected;
+            }
         }
     }
 
@@ -710,59 +755,100 @@ void FastLsd::joinAcrossSeams()
     for (int k = 0; k < released; k++)
         groupMembers[groupFill[joinedTo[k]]++] = k;
 
-    const auto tileOf = [&](int k) {
-        return (int)(std::upper_bound(releasedFirst.begin(), releasedFirst.end(), k) - releasedFirst.begin()) - 1;
-    };
-    // Released region k: its pixels, in the released buffers of its tile's regions.
-    const auto partOf = [&](int k, int& begin, int& end) -> const Regions& {
-        const int t = tileOf(k), local = k - releasedFirst[t];
-        const Regions& r = tiles[t].regions;
-        begin = r.releasedStart[local];
-        end = r.releasedStart[local + 1];
-        return r;
-    };
+    // The joined regions large enough to be valid, in tasks of at least kJoinedPixelsPerTask
+    // pixels, laid out from the regions alone.
+    joinedRoots.clear();
+    joinedTaskStart.clear();
+    int taskPixels = 0;
     for (int g = 0; g < released; g++)
     {
         if (joinedTo[g] != g)
             continue;
-        int size = 0, begin, end;
-        for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
-        {
-            partOf(groupMembers[m], begin, end);
-            size += end - begin;
-        }
+        const int size = joinedRegionSize(g);
         if (size < minRegionSize)
             continue;
-        // The joined region grows from the strongest seed of its parts (highest bin, then raster
-        // order), as it would have without the seams: that part's pixels come first.
-        int first = g, firstSeed = -1;
-        for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
+        if (joinedTaskStart.empty() || taskPixels >= kJoinedPixelsPerTask)
         {
-            const Regions& r = partOf(groupMembers[m], begin, end);
-            const int seed = r.releasedIndex[begin];
-            if (firstSeed < 0 || binOf(seed) > binOf(firstSeed) || (binOf(seed) == binOf(firstSeed) && seed < firstSeed))
-            {
-                first = groupMembers[m];
-                firstSeed = seed;
-            }
+            joinedTaskStart.push_back((int)joinedRoots.size());
+            taskPixels = 0;
         }
-        joined.reserve(size);
-        joined.regionSize = 0;
-        joined.regionSum = Point2f(0, 0);
-        const auto append = [&](int k) {
-            const Regions& r = partOf(k, begin, end);
-            std::copy(r.releasedIndex.begin() + begin, r.releasedIndex.begin() + end, joined.regionIndex.begin() + joined.regionSize);
-            if (joined.keepsVectors)
-                std::copy(r.releasedVector.begin() + begin, r.releasedVector.begin() + end, joined.regionVector.begin() + joined.regionSize);
-            joined.regionSize += end - begin;
-            joined.regionSum += r.releasedSum[k - releasedFirst[tileOf(k)]];
-        };
-        append(first);
-        for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
-            if (groupMembers[m] != first)
-                append(groupMembers[m]);
-        joined.emitRegion(*this);
+        taskPixels += size;
+        joinedRoots.push_back(g);
     }
+    const int tasks = (int)joinedTaskStart.size();
+    joinedTaskStart.push_back((int)joinedRoots.size());
+    while ((int)joiningTasks.size() < tasks)
+    {
+        joiningTasks.push_back(makePtr<Regions>());
+        joiningTasks.back()->fitsAnyRegion = false;
+        joiningTasks.back()->keepsVectors = false;  // they grow no region again
+    }
+    joinedOutcome.resize(joinedRoots.size());
+    joinedSegment.resize(joinedRoots.size());
+    parallel_for_(Range(0, tasks), JoinedRegions(*this), tasks);
+    // In order: the segments of the tasks, and the regions that grow again, over pixels that
+    // the regions grown again before them may have freed.
+    for (size_t i = 0; i < joinedRoots.size(); i++)
+    {
+        if (joinedOutcome[i] == kValid)
+            joined.segments.push_back(joinedSegment[i]);
+        else if (joinedOutcome[i] == kGrowsAgain)
+        {
+            gatherJoinedRegion(joinedRoots[i], joined);
+            joined.emitRegion(*this);
+        }
+    }
+}
+
+const FastLsd::Regions& FastLsd::releasedPart(int k, int& local) const
+{
+    const int t = (int)(std::upper_bound(releasedFirst.begin(), releasedFirst.end(), k) - releasedFirst.begin()) - 1;
+    local = k - releasedFirst[t];
+    return tiles[t].regions;
+}
+
+int FastLsd::joinedRegionSize(int g) const
+{
+    int size = 0, local;
+    for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
+    {
+        const Regions& r = releasedPart(groupMembers[m], local);
+        size += r.releasedStart[local + 1] - r.releasedStart[local];
+    }
+    return size;
+}
+
+void FastLsd::gatherJoinedRegion(int g, Regions& region) const
+{
+    // The joined region grows from the strongest seed of its parts (highest bin, then raster
+    // order), as it would have without the seams: that part's pixels come first.
+    int first = g, firstSeed = -1, local;
+    for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
+    {
+        const Regions& r = releasedPart(groupMembers[m], local);
+        const int seed = r.releasedIndex[r.releasedStart[local]];
+        if (firstSeed < 0 || binOf(seed) > binOf(firstSeed) || (binOf(seed) == binOf(firstSeed) && seed < firstSeed))
+        {
+            first = groupMembers[m];
+            firstSeed = seed;
+        }
+    }
+    region.reserve(joinedRegionSize(g));
+    region.regionSize = 0;
+    region.regionSum = Point2f(0, 0);
+    const auto append = [&](int k) {
+        const Regions& r = releasedPart(k, local);
+        const int begin = r.releasedStart[local], end = r.releasedStart[local + 1];
+        std::copy(r.releasedIndex.begin() + begin, r.releasedIndex.begin() + end, region.regionIndex.begin() + region.regionSize);
+        if (region.keepsVectors)
+            std::copy(r.releasedVector.begin() + begin, r.releasedVector.begin() + end, region.regionVector.begin() + region.regionSize);
+        region.regionSize += end - begin;
+        region.regionSum += r.releasedSum[local];
+    };
+    append(first);
+    for (int m = groupStart[g]; m < groupStart[g + 1]; m++)
+        if (groupMembers[m] != first)
+            append(groupMembers[m]);
 }
 
 void FastLsd::Regions::reserve(size_t pixels)
@@ -827,6 +913,21 @@ void FastLsd::Regions::emitRegion(FastLsd& lsd)
     regionToRect(lsd, lsd.tolerance, lsd.probability, rect);
     if (lsd.refine >= kLsdRefineStd && !refineRegion(lsd, rect))
         return;
+    emitRect(lsd, rect);
+}
+
+bool FastLsd::Regions::emitUnlessRegrown(const FastLsd& lsd)
+{
+    Rect rect;
+    regionToRect(lsd, lsd.tolerance, lsd.probability, rect);
+    if (lsd.refine >= kLsdRefineStd && density(rect) < lsd.densityThreshold)
+        return false;
+    emitRect(lsd, rect);
+    return true;
+}
+
+void FastLsd::Regions::emitRect(const FastLsd& lsd, Rect& rect)
+{
     if (lsd.refine >= kLsdRefineAdv && improveRect(lsd, rect) <= lsd.logEps)
         return;
     // The 2x2 gradient of pixel (x, y) is that of the point (x + 0.5, y + 0.5).
@@ -1055,10 +1156,14 @@ void FastLsd::Regions::regionToRect(const FastLsd& lsd, double prec, double p, R
     rect.p = p;
 }
 
+double FastLsd::Regions::density(const Rect& rect) const
+{
+    return regionSize / (std::sqrt(squaredDistance(rect.x1, rect.y1, rect.x2, rect.y2)) * rect.width);
+}
+
 bool FastLsd::Regions::refineRegion(FastLsd& lsd, Rect& rect)
 {
-    double density = regionSize / (std::sqrt(squaredDistance(rect.x1, rect.y1, rect.x2, rect.y2)) * rect.width);
-    if (density >= lsd.densityThreshold)
+    if (density(rect) >= lsd.densityThreshold)
         return true;
 
     // Too sparse: grow the region again from its seed with the tolerance narrowed to twice the
@@ -1087,16 +1192,16 @@ bool FastLsd::Regions::refineRegion(FastLsd& lsd, Rect& rect)
     if (regionSize < 2)
         return false;
     regionToRect(lsd, rect.prec, rect.p, rect);
-    density = regionSize / (std::sqrt(squaredDistance(rect.x1, rect.y1, rect.x2, rect.y2)) * rect.width);
-    return density >= lsd.densityThreshold || shrinkRegionRadius(lsd, rect, density);
+    const double regrownDensity = density(rect);
+    return regrownDensity >= lsd.densityThreshold || shrinkRegionRadius(lsd, rect, regrownDensity);
 }
 
-bool FastLsd::Regions::shrinkRegionRadius(FastLsd& lsd, Rect& rect, double density)
+bool FastLsd::Regions::shrinkRegionRadius(FastLsd& lsd, Rect& rect, double currentDensity)
 {
     const Point centre = regionPixel[0];
     double radius2 = std::max(squaredDistance(centre.x, centre.y, rect.x1, rect.y1),
                               squaredDistance(centre.x, centre.y, rect.x2, rect.y2));
-    while (density < lsd.densityThreshold)
+    while (currentDensity < lsd.densityThreshold)
     {
         radius2 *= 0.75 * 0.75;
         for (int i = 0; i < regionSize;)
@@ -1115,7 +1220,7 @@ bool FastLsd::Regions::shrinkRegionRadius(FastLsd& lsd, Rect& rect, double densi
         if (regionSize < 2)
             return false;
         regionToRect(lsd, rect.prec, rect.p, rect);
-        density = regionSize / (std::sqrt(squaredDistance(rect.x1, rect.y1, rect.x2, rect.y2)) * rect.width);
+        currentDensity = density(rect);
     }
     return true;
 }

@@ -52,10 +52,18 @@ private:
     struct Tile;
     class GradientRows;
     class TileRegions;
+    class JoinedRegions;
     void layTiles();
     void computeGradient(const Mat& image);
     void orderTile(Tile& tile);
     void joinAcrossSeams();
+    //! The released region k (in the frame's numbering): its tile's regions, and its index there.
+    const Regions& releasedPart(int k, int& local) const;
+    //! Pixels of the joined region whose root is g.
+    int joinedRegionSize(int g) const;
+    //! The joined region whose root is g as region's current region, the part with the strongest
+    //! seed first.
+    void gatherJoinedRegion(int g, Regions& region) const;
     //! Bin of a pixel in the pseudo-ordering.
     int binOf(int pixel) const;
     //! How many of the two 8-neighbours of a pixel along its level line are aligned with it.
@@ -104,7 +112,14 @@ private:
     std::vector<int> releasedFirst;         //!< index in the frame of each tile's first released region
     std::vector<int> joinedTo;              //!< union-find links between the released regions
     std::vector<int> groupStart, groupFill, groupMembers;  //!< the released regions of each joined region
-    Ptr<Regions> acrossSeams;               //!< validates the joined regions
+    Ptr<Regions> acrossSeams;               //!< validates the joined regions that grow again
+    //! The joined regions large enough to be valid (their roots), the first of each task of
+    //! them, what the task found for each (JoinedOutcome in fast_lsd.cpp) and its segment; the
+    //! region buffers of each task.
+    std::vector<int> joinedRoots, joinedTaskStart;
+    std::vector<char> joinedOutcome;
+    std::vector<Vec4f> joinedSegment;
+    std::vector<Ptr<Regions> > joiningTasks;
 };
 
 }}} // namespace cv::ximgproc::lsda

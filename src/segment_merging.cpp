@@ -147,7 +147,7 @@ private:
 // fusion happens; a piece too far from its baseline in one round may join once its neighbour
 // has. Only the segments a grown baseline can reach, and those whose fusion failed, are scored
 // again: the others' best baseline cannot have changed.
-void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params, const Mat& mask)
+void mergeIntoBaselines(GroupWorkspace& ws, const MergingParams& params, const Mat& mask)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -269,7 +269,7 @@ void mergeIntoBaselines(MergeWorkspace& ws, const MergingParams& params, const M
 // again and again until none passes; equal lengths go by index. Unlike the paper's rule, two
 // long collinear pieces of one edge can join. The shorter segments are visited outwards from
 // the base's projection and the visit stops where no segment can reach the best score so far.
-void mergeLongestFirst(MergeWorkspace& ws, const MergingParams& params, const Mat& mask)
+void mergeLongestFirst(GroupWorkspace& ws, const MergingParams& params, const Mat& mask)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
@@ -534,6 +534,83 @@ int ProjectionSweep::lastStartingBefore(int lane, double value)
     return findPrevious((int)(std::lower_bound(begin, end, value) - starts.begin()) - 1);
 }
 
+namespace {
+
+// Members per task of stage 3, at least: most groups hold one segment, and a task of a few
+// costs the pool more than their merging.
+constexpr int kMembersPerTask = 64;
+
+// Merges group g alone: its survivors go to ws.placed from the place of its first member on,
+// and each member's mergedInto to the place of the survivor it is part of.
+void mergeGroup(const std::vector<Vec4f>& segments, const SegmentGroups& groups, int g,
+                const MergingParams& params, const Mat& mask, GroupWorkspace& ws,
+                std::vector<Vec4f>& placed, int& survivors, std::vector<int>& mergedInto)
+{
+    const int begin = groups.offsets[g], end = groups.offsets[g + 1];
+    if (end - begin == 1 || params.mergeStrategy == LSDAdvance::MERGE_NONE)
+    {
+        for (int k = begin; k < end; k++)
+        {
+            mergedInto[groups.members[k]] = k;
+            placed[k] = segments[groups.members[k]];
+        }
+        survivors = end - begin;
+        return;
+    }
+    const int n = end - begin;
+    ws.geometry.clear();
+    for (int k = begin; k < end; k++)
+        ws.geometry.push_back(segments[groups.members[k]]);
+    ws.consumed.assign(n, 0);
+    ws.fusedInto.assign(n, -1);
+    ws.length.resize(n);
+    if (params.mergeStrategy == LSDAdvance::MERGE_BASELINES)
+        mergeIntoBaselines(ws, params, mask);
+    else
+        mergeLongestFirst(ws, params, mask);
+    ws.outputOf.assign(n, -1);
+    survivors = 0;
+    for (int k = 0; k < n; k++)
+        if (!ws.consumed[k])
+        {
+            ws.outputOf[k] = begin + survivors;
+            placed[begin + survivors++] = ws.geometry[k];
+        }
+    // A consumed segment is part of what it was fused into, and so on until a survivor.
+    for (int k = 0; k < n; k++)
+    {
+        int owner = k;
+        while (ws.consumed[owner])
+            owner = ws.fusedInto[owner];
+        mergedInto[groups.members[begin + k]] = ws.outputOf[owner];
+    }
+}
+
+// The groups of a range of tasks, each task with its own workspace.
+class GroupTasks CV_FINAL : public ParallelLoopBody
+{
+public:
+    GroupTasks(const std::vector<Vec4f>& segments_, const SegmentGroups& groups_, const MergingParams& params_,
+               const Mat& mask_, MergeWorkspace& ws_, std::vector<int>& mergedInto_)
+        : segments(segments_), groups(groups_), params(params_), mask(mask_), ws(ws_), mergedInto(mergedInto_) {}
+    void operator()(const Range& range) const CV_OVERRIDE
+    {
+        for (int t = range.start; t < range.end; t++)
+            for (int g = ws.taskStart[t]; g < ws.taskStart[t + 1]; g++)
+                mergeGroup(segments, groups, g, params, mask, ws.tasks[t], ws.placed, ws.survivors[g], mergedInto);
+    }
+
+private:
+    const std::vector<Vec4f>& segments;
+    const SegmentGroups& groups;
+    const MergingParams& params;
+    const Mat& mask;
+    MergeWorkspace& ws;
+    std::vector<int>& mergedInto;
+};
+
+} // namespace
+
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                  const MergingParams& params, std::vector<Vec4f>& merged, std::vector<int>& mergedInto,
                  MergeWorkspace& ws, const Mat& mask)
@@ -541,45 +618,30 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
     merged.clear();
     merged.reserve(segments.size());
     mergedInto.assign(segments.size(), -1);
-    for (int g = 0; g < groups.count(); g++)
-    {
-        const int begin = groups.offsets[g], end = groups.offsets[g + 1];
-        if (end - begin == 1 || params.mergeStrategy == LSDAdvance::MERGE_NONE)
+    const int count = groups.count();
+    ws.taskStart.clear();
+    for (int g = 0; g < count; g++)
+        if (ws.taskStart.empty() || groups.offsets[g] - groups.offsets[ws.taskStart.back()] >= kMembersPerTask)
+            ws.taskStart.push_back(g);
+    const int tasks = (int)ws.taskStart.size();
+    ws.taskStart.push_back(count);
+    if (ws.tasks.size() < (size_t)tasks)
+        ws.tasks.resize(tasks);
+    ws.placed.resize(groups.members.size());
+    ws.survivors.resize(count);
+    parallel_for_(Range(0, tasks), GroupTasks(segments, groups, params, mask, ws, mergedInto), tasks);
+
+    // The survivors in group order; the places mergedInto holds become their indices there.
+    ws.outputIndex.resize(groups.members.size());
+    for (int g = 0; g < count; g++)
+        for (int k = groups.offsets[g]; k < groups.offsets[g] + ws.survivors[g]; k++)
         {
-            for (int k = begin; k < end; k++)
-            {
-                mergedInto[groups.members[k]] = (int)merged.size();
-                merged.push_back(segments[groups.members[k]]);
-            }
-            continue;
+            ws.outputIndex[k] = (int)merged.size();
+            merged.push_back(ws.placed[k]);
         }
-        const int n = end - begin;
-        ws.geometry.clear();
-        for (int k = begin; k < end; k++)
-            ws.geometry.push_back(segments[groups.members[k]]);
-        ws.consumed.assign(n, 0);
-        ws.fusedInto.assign(n, -1);
-        ws.length.resize(n);
-        if (params.mergeStrategy == LSDAdvance::MERGE_BASELINES)
-            mergeIntoBaselines(ws, params, mask);
-        else
-            mergeLongestFirst(ws, params, mask);
-        ws.outputOf.assign(n, -1);
-        for (int k = 0; k < n; k++)
-            if (!ws.consumed[k])
-            {
-                ws.outputOf[k] = (int)merged.size();
-                merged.push_back(ws.geometry[k]);
-            }
-        // A consumed segment is part of what it was fused into, and so on until a survivor.
-        for (int k = 0; k < n; k++)
-        {
-            int owner = k;
-            while (ws.consumed[owner])
-                owner = ws.fusedInto[owner];
-            mergedInto[groups.members[begin + k]] = ws.outputOf[owner];
-        }
-    }
+    for (int& m : mergedInto)
+        if (m >= 0)
+            m = ws.outputIndex[m];
 }
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,

@@ -3,7 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Stage 3's pruning machinery: the projection sweep that keeps merging near-linear, and the
-// buffers merging reuses from group to group. Internal to segment_merging.cpp, the
+// buffers merging reuses from group to group and from task to task. Internal to segment_merging.cpp, the
 // implementation class (which owns a workspace) and the tests of the sweep.
 
 #ifndef OPENCV_LSD_ADVANCE_SEGMENT_MERGING_HPP
@@ -76,8 +76,8 @@ struct MergeCandidate
     int baseline;  //!< index into the group's members; -1 for none
 };
 
-//! Buffers of stage 3, reused from group to group and call to call.
-struct MergeWorkspace
+//! Buffers of the merging of one group, reused from group to group and call to call.
+struct GroupWorkspace
 {
     std::vector<Vec4f> geometry;  //!< the current group's segments, fused in place
     std::vector<char> consumed;
@@ -90,6 +90,18 @@ struct MergeWorkspace
     std::vector<MergeCandidate> candidates, bestOf;
     std::vector<std::pair<double, int> > baselineStarts;
     ProjectionSweep sweep;
+};
+
+//! Buffers of stage 3, reused from call to call: the groups are merged in tasks of consecutive
+//! groups (laid out from the groups alone), each with its own GroupWorkspace, into the places of
+//! their members; the survivors are then gathered in group order.
+struct MergeWorkspace
+{
+    std::vector<int> taskStart;        //!< the first group of each task, and the count at the end
+    std::vector<GroupWorkspace> tasks;
+    std::vector<Vec4f> placed;         //!< the survivors of each group, from its first member's place
+    std::vector<int> survivors;        //!< per group
+    std::vector<int> outputIndex;      //!< index in the merged output of each place
 };
 
 }}} // namespace cv::ximgproc::lsda

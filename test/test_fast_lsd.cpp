@@ -325,6 +325,67 @@ TEST(LSDAdvance_FastLsd, output_does_not_depend_on_the_number_of_threads)
     setNumThreads(threads);
 }
 
+// Stage 3 merges its groups in tasks of consecutive groups and the line responses run in tasks of
+// segments, both laid out from their input alone: every stage's output, the responses and the
+// sources do not depend on the number of threads, with either merging strategy, on frames of
+// hundreds of base segments (several tasks of each: 64 members, 64 segments).
+TEST(LSDAdvance_FastLsd, merging_and_responses_do_not_depend_on_the_number_of_threads)
+{
+    const int threads = getNumThreads();
+    for (const std::string& path : { yorkUrbanImages(1)[0], kittiFrames(1)[0] })
+    {
+        const Mat img = imread(path, IMREAD_GRAYSCALE);
+        ASSERT_FALSE(img.empty()) << path;
+        for (int strategy : { LSDAdvance::MERGE_BASELINES, LSDAdvance::MERGE_LONGEST_FIRST })
+        {
+            SCOPED_TRACE(cv::format("%s, strategy %d", path.c_str(), strategy));
+            Ptr<LSDAdvance> detector = createLSDAdvance();
+            LSDAdvance::Params params = detector->getParams();
+            params.mergeStrategy = strategy;
+            detector->setParams(params);
+            std::vector<Vec4f> referenceLines, referenceBase, referenceMerged;
+            std::vector<float> referenceResponses;
+            std::vector<int> referenceLabels;
+            std::vector<std::vector<int> > referenceSources;
+            for (int n : { 1, 2, 3, 8 })
+            {
+                setNumThreads(n);
+                std::vector<Vec4f> lines, base, merged;
+                std::vector<float> responses;
+                std::vector<int> labels;
+                std::vector<std::vector<int> > sources;
+                detector->detect(img, lines);
+                detector->getLastResponses(responses);
+                detector->getLastStageOutputs(base, noArray(), labels, merged);
+                detector->getLastSources(sources);
+                if (n == 1)
+                {
+                    referenceLines = lines;
+                    referenceBase = base;
+                    referenceMerged = merged;
+                    referenceResponses = responses;
+                    referenceLabels = labels;
+                    referenceSources = sources;
+                    EXPECT_GT(detector->getLastStats().mergeGroups, 50);
+                    EXPECT_GT(base.size(), 512u);
+                    EXPECT_LT(merged.size(), base.size());
+                }
+                ASSERT_EQ(referenceLines.size(), lines.size()) << n << " threads";
+                EXPECT_EQ(0, memcmp(referenceLines.data(), lines.data(), lines.size() * sizeof(Vec4f))) << n << " threads";
+                ASSERT_EQ(referenceBase.size(), base.size()) << n << " threads";
+                EXPECT_EQ(0, memcmp(referenceBase.data(), base.data(), base.size() * sizeof(Vec4f))) << n << " threads";
+                ASSERT_EQ(referenceMerged.size(), merged.size()) << n << " threads";
+                EXPECT_EQ(0, memcmp(referenceMerged.data(), merged.data(), merged.size() * sizeof(Vec4f))) << n << " threads";
+                ASSERT_EQ(referenceResponses.size(), responses.size()) << n << " threads";
+                EXPECT_EQ(0, memcmp(referenceResponses.data(), responses.data(), responses.size() * sizeof(float))) << n << " threads";
+                EXPECT_EQ(referenceLabels, labels) << n << " threads";
+                EXPECT_EQ(referenceSources, sources) << n << " threads";
+            }
+        }
+    }
+    setNumThreads(threads);
+}
+
 // Regions grow in the LSD algorithm's order, so a region only takes pixels weaker than its seed:
 // with the seeds of the bins above a gradient level only, the regions are exactly the first ones
 // of the LSD algorithm, and so are the segments, in the same order.
