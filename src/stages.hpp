@@ -213,16 +213,27 @@ struct SegmentGroups
 //! Undirected angle bin of a segment: floor(angle / width) for angle in [0, 180).
 CV_EXPORTS int angleBin(const Vec4f& segment, double binWidth);
 
+//! angleBin() of each segment into bins, without its atan2 for a segment clearly inside a bin
+//! (a cheap guess checked against the directions of the bin's edges); edges is a buffer.
+CV_EXPORTS void angleBins(const std::vector<Vec4f>& segments, double binWidth, std::vector<int>& bins,
+                          std::vector<Point2d>& edges);
+
 //! Buffers of stage 2, reused from call to call so that a sequence of frames does not allocate.
 struct GroupingWorkspace
 {
     std::vector<int> bin;             //!< angle bin of each segment
+    std::vector<Point2d> binEdges;    //!< directions of the bins' edges
     std::vector<Point> endpointCell;  //!< grid cell (x, y) of each endpoint
-    std::vector<int64> tableKeys;     //!< without a dense grid, open-addressing hash table: grid cell key ...
+    std::vector<int64> tableKeys;     //!< without a dense grid, open-addressing hash table: (bin, cell) key ...
     std::vector<int> tableCells;      //!< ... -> cell number (-1: empty slot)
-    std::vector<int> cellOfEndpoint;  //!< cell number of each endpoint (in the dense grid or the table)
+    std::vector<int> cellOfEndpoint;  //!< (bin, cell) number of each endpoint (in the dense grid or the table)
     std::vector<int> cellStart;       //!< endpoints of cell c: cellEndpoints[cellStart[c] .. cellStart[c+1])
     std::vector<int> cellEndpoints;
+    std::vector<int> filedCell;       //!< the cells, points and segments of the endpoints in the order of cellEndpoints
+    std::vector<Point2d> filedPoint;
+    std::vector<int> filedSegment;
+    std::vector<int> queuedFrom, queuedTo;  //!< a batch of comparisons (filed positions) ...
+    std::vector<Vec2i> pairs;         //!< ... and of adjacent segments
     std::vector<int> parent;          //!< union-find forest over the segments
     std::vector<int> groupOf;
     std::vector<int> fill;

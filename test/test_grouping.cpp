@@ -115,6 +115,42 @@ TEST(LSDAdvance_Grouping, pieces_straddling_the_0_180_wrap_connect_with_neighbou
     EXPECT_NE(strict[0], strict[1]);
 }
 
+// A label per segment by the rule over all pairs, equal for two segments when they are in one
+// group: connected components by repeated relabelling.
+std::vector<int> allPairsLabels(const std::vector<Vec4f>& segments, const lsda::GroupingParams& params)
+{
+    const int n = (int)segments.size();
+    const int bins = (int)std::ceil(180.0 / params.angleBinWidth - 1e-9);
+    std::vector<int> label(n), bin(n);
+    for (int i = 0; i < n; i++)
+    {
+        label[i] = i;
+        bin[i] = lsda::angleBin(segments[i], params.angleBinWidth);
+    }
+    for (bool changed = true; changed;)
+    {
+        changed = false;
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++)
+            {
+                const int d = std::abs(bin[i] - bin[j]);
+                if (i == j || !(d == 0 || (params.angleBinning == LSDAdvance::ANGLE_BINS_NEIGHBOURS && (d == 1 || d == bins - 1))))
+                    continue;
+                double best = DBL_MAX;
+                for (int ei = 0; ei < 2; ei++)
+                    for (int ej = 0; ej < 2; ej++)
+                        best = std::min(best, (double)std::hypot(segments[i][2 * ei] - segments[j][2 * ej],
+                                                         segments[i][2 * ei + 1] - segments[j][2 * ej + 1]));
+                if (best < params.endpointDistance && label[j] != std::min(label[i], label[j]))
+                {
+                    label[j] = label[i] = std::min(label[i], label[j]);
+                    changed = true;
+                }
+            }
+    }
+    return label;
+}
+
 TEST(LSDAdvance_Grouping, matches_an_all_pairs_reference_on_random_segments)
 {
     RNG rng(20260521);
@@ -128,39 +164,73 @@ TEST(LSDAdvance_Grouping, matches_an_all_pairs_reference_on_random_segments)
         lsda::GroupingParams params = groupingParams(trial % 2 == 0, rng.uniform(2., 20.));
         params.angleBinWidth = rng.uniform(5., 30.);
 
-        // Reference: all pairs, connected components by repeated relabelling.
         const int n = (int)segments.size();
-        const int bins = (int)std::ceil(180.0 / params.angleBinWidth - 1e-9);
-        std::vector<int> label(n);
-        for (int i = 0; i < n; i++)
-            label[i] = i;
-        for (bool changed = true; changed;)
-        {
-            changed = false;
-            for (int i = 0; i < n; i++)
-                for (int j = 0; j < n; j++)
-                {
-                    const int bi = lsda::angleBin(segments[i], params.angleBinWidth);
-                    const int bj = lsda::angleBin(segments[j], params.angleBinWidth);
-                    const int d = std::abs(bi - bj);
-                    if (i == j || !(d == 0 || (params.angleBinning == LSDAdvance::ANGLE_BINS_NEIGHBOURS && (d == 1 || d == bins - 1))))
-                        continue;
-                    double best = DBL_MAX;
-                    for (int ei = 0; ei < 2; ei++)
-                        for (int ej = 0; ej < 2; ej++)
-                            best = std::min(best, (double)std::hypot(segments[i][2 * ei] - segments[j][2 * ej],
-                                                             segments[i][2 * ei + 1] - segments[j][2 * ej + 1]));
-                    if (best < params.endpointDistance && label[j] != std::min(label[i], label[j]))
-                    {
-                        label[j] = label[i] = std::min(label[i], label[j]);
-                        changed = true;
-                    }
-                }
-        }
+        const std::vector<int> label = allPairsLabels(segments, params);
         const std::vector<int> id = groupIds(segments, params);
         for (int i = 0; i < n; i++)
             for (int j = i + 1; j < n; j++)
                 ASSERT_EQ(label[i] == label[j], id[i] == id[j]) << "segments " << i << ", " << j;
+    }
+}
+
+// Endpoints are filed by angle bin and cell, each pair of neighbouring bins compared from one side
+// (two bins are each other's neighbours on both sides, three all pair), in a dense grid or in a
+// hash of the cells when the endpoints are spread far apart: every way against the rule.
+TEST(LSDAdvance_Grouping, matches_the_all_pairs_reference_at_any_bin_count_dense_or_hashed)
+{
+    RNG rng(20260602);
+    for (double binWidth : { 90.0, 60.0, 45.0, 7.0, 1.0 })
+        for (bool neighbourBins : { true, false })
+            for (bool spread : { false, true })
+            {
+                SCOPED_TRACE(cv::format("bin width %g, %s bins, %s", binWidth, neighbourBins ? "neighbour" : "strict",
+                                        spread ? "spread" : "dense"));
+                // Clusters of segments, around the origin or 2e6 px apart (spread: the hashed cells).
+                std::vector<Vec4f> segments;
+                for (int cluster = 0; cluster < 4; cluster++)
+                {
+                    const double cx = spread ? (cluster - 1.5) * 2e6 : 0.0, cy = spread ? (cluster % 2) * 2e6 : 0.0;
+                    for (int i = 0; i < 60; i++)
+                        segments.push_back(segmentAt(cx + rng.uniform(0., 120.), cy + rng.uniform(0., 120.),
+                                                     rng.uniform(0., 360.), rng.uniform(0., 30.)));
+                }
+                lsda::GroupingParams params = groupingParams(neighbourBins, 12.0);
+                params.angleBinWidth = binWidth;
+                const std::vector<int> label = allPairsLabels(segments, params);
+                const std::vector<int> id = groupIds(segments, params);
+                for (size_t i = 0; i < segments.size(); i++)
+                    for (size_t j = i + 1; j < segments.size(); j++)
+                        ASSERT_EQ(label[i] == label[j], id[i] == id[j]) << "segments " << i << ", " << j;
+            }
+}
+
+// angleBins() places a direction without atan2 only when it is clearly inside a bin: on and
+// around every edge, on the axes and diagonals, reversed, and for points, it gives angleBin().
+TEST(LSDAdvance_Grouping, angleBins_equal_angleBin_on_and_around_every_edge)
+{
+    RNG rng(5);
+    std::vector<Point2d> edges;
+    std::vector<int> bins;
+    for (double binWidth : { 1.0, 4.5, 7.0, 10.0, 15.0, 45.0, 60.0, 70.0, 90.0 })
+    {
+        SCOPED_TRACE(binWidth);
+        std::vector<Vec4f> segments;
+        for (int k = 0; k * binWidth <= 360.0; k++)
+            for (double offset : { 0.0, 1e-12, -1e-12, 1e-7, -1e-7, 1e-3, -1e-3 })
+                for (double length : { 0.01, 1.0, 37.0, 1000.0 })
+                    segments.push_back(segmentAt(rng.uniform(-500., 500.), rng.uniform(-500., 500.),
+                                                 k * binWidth + offset, length));
+        for (float d : { 1.f, 1e-3f, 1e3f })
+            for (int dx = -1; dx <= 1; dx++)
+                for (int dy = -1; dy <= 1; dy++)
+                    segments.push_back(Vec4f(5, 7, 5 + dx * d, 7 + dy * d));  // axes, diagonals, a point
+        for (int i = 0; i < 2000; i++)
+            segments.push_back(segmentAt(rng.uniform(-500., 500.), rng.uniform(-500., 500.), rng.uniform(0., 360.),
+                                         rng.uniform(0., 100.)));
+        lsda::angleBins(segments, binWidth, bins, edges);
+        ASSERT_EQ(segments.size(), bins.size());
+        for (size_t i = 0; i < segments.size(); i++)
+            ASSERT_EQ(lsda::angleBin(segments[i], binWidth), bins[i]) << segments[i];
     }
 }
 
