@@ -6,6 +6,7 @@
 
 #include "precomp.hpp"
 #include "segment_merging.hpp"
+#include "opencv2/core/hal/intrin.hpp"
 
 namespace cv {
 namespace ximgproc {
@@ -48,6 +49,60 @@ Vec3d secondMoment(const Vec4f& s, double l, const Point2d& c)
     return l * Vec3d(d.x * d.x / 12.0 + o.x * o.x, d.x * d.y / 12.0 + o.x * o.y, d.y * d.y / 12.0 + o.y * o.y);
 }
 
+// similarityTerms() and fuseSegments() given the segments' lengths (segmentLength()): merging
+// keeps the length of each segment of a group, as fusions change them, instead of measuring
+// the same segments again at every comparison.
+// Reach (below) relies on these terms' bounds: Sd <= 1, Sp <= 1 - gap / Dth, Sl <= the ratio of
+// the lengths.
+SimilarityTerms similarityTermsOfLengths(const Vec4f& baseline, const Vec4f& other, double lb, double lo,
+                                         double proximityRatio)
+{
+    SimilarityTerms t;
+    // A point has no direction: it must not score as if it pointed along the baseline.
+    t.direction = lb > 0 && lo > 0 ? std::max(unitDirection(baseline).dot(unitDirection(other)), 0.0) : 0.0;
+    const double threshold = proximityRatio * 0.5 * (lb + lo);
+    const double dmin = segmentDistance(baseline, other);
+    t.proximity = threshold > 0 ? std::max(1.0 - dmin / threshold, 0.0) : (dmin > 0 ? 0.0 : 1.0);
+    const double longer = std::max(lb, lo);
+    t.length = longer > 0 ? 1.0 - std::abs(lb - lo) / longer : 1.0;
+    return t;
+}
+
+Vec4f fuseSegmentsOfLengths(const Vec4f& baseline, const Vec4f& other, double l1, double l2)
+{
+    const Point2d m1 = (startOf(baseline) + endOf(baseline)) * 0.5;
+    const Point2d m2 = (startOf(other) + endOf(other)) * 0.5;
+    const Point2d centre = l1 + l2 > 0 ? (l1 * m1 + l2 * m2) * (1.0 / (l1 + l2)) : m1;
+
+    // The least-squares line of the two as uniform masses: the principal axis of their second
+    // moments about the centre, oriented like the baseline. Parallel runs one step apart, the
+    // pieces of an aliased edge, fuse along the line through them; the mean of their directions
+    // would keep the runs' direction, and the next run would fall outside the perpendicular gate.
+    const Vec3d moments = secondMoment(baseline, l1, centre) + secondMoment(other, l2, centre);
+    const Point2d u1 = unitDirection(baseline);
+    // The eigenvector of the larger eigenvalue, from whichever of its two forms is longer: exact
+    // along an axis (a border's pieces stay on it).
+    const double half = 0.5 * (moments[0] - moments[2]);
+    const double lambda = 0.5 * (moments[0] + moments[2]) + std::sqrt(half * half + moments[1] * moments[1]);
+    const Point2d fromXy(moments[1], lambda - moments[0]), fromYy(lambda - moments[2], moments[1]);
+    Point2d dir = fromXy.dot(fromXy) > fromYy.dot(fromYy) ? fromXy : fromYy;
+    const double dirNorm = norm(dir);
+    dir = dirNorm > 0 ? dir * (1.0 / dirNorm) : u1;
+    if (dir.dot(u1) < 0)
+        dir = -dir;
+
+    const Point2d ends[4] = { startOf(baseline), endOf(baseline), startOf(other), endOf(other) };
+    double tMin = 0, tMax = 0;
+    for (int i = 0; i < 4; i++)
+    {
+        const double t = (ends[i] - centre).dot(dir);
+        tMin = i == 0 ? t : std::min(tMin, t);
+        tMax = i == 0 ? t : std::max(tMax, t);
+    }
+    const Point2d a = centre + tMin * dir, b = centre + tMax * dir;
+    return Vec4f((float)a.x, (float)a.y, (float)b.x, (float)b.y);
+}
+
 // Whether the gap between two segments along the line they fuse into (from the end of the
 // projection of one on it to the start of the other's; none when they overlap) is on the mask.
 bool gapInMask(const Mat& mask, const Vec4f& base, const Vec4f& seg)
@@ -64,12 +119,14 @@ bool gapInMask(const Mat& mask, const Vec4f& base, const Vec4f& seg)
 // Whether seg may fuse into base: inside the perpendicular gate, closer than Dth, and scoring
 // at least the threshold (the score is returned). Without the distance condition, direction and
 // length alone (0.6 with the paper's weights) would join collinear pieces any distance apart.
-// With a mask, the gap between the two along their fused line must also be on it.
-bool passes(const Vec4f& base, const Vec4f& seg, const MergingParams& params, const Mat& mask, double& score)
+// With a mask, the gap between the two along their fused line must also be on it. baseLength and
+// segLength are their lengths.
+bool passes(const Vec4f& base, const Vec4f& seg, double baseLength, double segLength, const MergingParams& params,
+            const Mat& mask, double& score)
 {
     if (perpendicularOffset(base, seg) > params.maxPerpendicularOffset)
         return false;
-    const SimilarityTerms terms = similarityTerms(base, seg, params.proximityRatio);
+    const SimilarityTerms terms = similarityTermsOfLengths(base, seg, baseLength, segLength, params.proximityRatio);
     if (terms.proximity <= 0)
         return false;
     score = similarityScore(terms, params);
@@ -128,16 +185,56 @@ public:
         const double len = std::sqrt(d.dot(d));
         normal = len > 0 ? Point2d(-d.y / len, d.x / len) : Point2d(0, 0);
         open = !(len > 0);
+        baseEnd = along(Point2d(base[2], base[3]));
     }
     bool mayPass(const Vec4f& s) const
     {
-        return open || (std::abs(normal.dot(Point2d(s[0], s[1]) - origin)) <= limit &&
-                        std::abs(normal.dot(Point2d(s[2], s[3]) - origin)) <= limit);
+        return open || mayPass(Point2d(s[0], s[1]), Point2d(s[2], s[3]));
+    }
+    // The same for a segment that is not a point (as a base, open) from a to b.
+    bool mayPass(const Point2d& a, const Point2d& b) const
+    {
+        return std::abs(normal.dot(a - origin)) <= limit && std::abs(normal.dot(b - origin)) <= limit;
+    }
+    // The gap between the projections of the base and of the segment from a to b on the base's
+    // direction (0 for a point as base): no more than the distance between the two.
+    double gapAlong(const Point2d& a, const Point2d& b) const
+    {
+        const double ta = along(a), tb = along(b);
+        return std::max(std::max(std::min(ta, tb) - baseEnd, -std::max(ta, tb)), 0.0);
+    }
+    // Calls visit(j) for each j of [from, to) whose segment, (x0[j], y0[j]) to (x1[j], y1[j]),
+    // may pass (a point as base lets every segment through).
+    template <class Visit>
+    void visitMayPass(const double* x0, const double* y0, const double* x1, const double* y1, int from, int to,
+                      Visit visit) const
+    {
+        int j = from;
+#if CV_SIMD128_64F
+        // Two at a time, with mayPass()'s operations lane by lane.
+        const v_float64x2 nx = v_setall_f64(normal.x), ny = v_setall_f64(normal.y);
+        const v_float64x2 ox = v_setall_f64(origin.x), oy = v_setall_f64(origin.y), bound = v_setall_f64(limit);
+        for (; j + 2 <= to; j += 2)
+        {
+            const v_float64x2 a = v_abs(nx * (v_load(x0 + j) - ox) + ny * (v_load(y0 + j) - oy));
+            const v_float64x2 b = v_abs(nx * (v_load(x1 + j) - ox) + ny * (v_load(y1 + j) - oy));
+            const int near = v_signmask((a <= bound) & (b <= bound));
+            if (near & 1)
+                visit(j);
+            if (near & 2)
+                visit(j + 1);
+        }
+#endif
+        for (; j < to; j++)
+            if (open || mayPass(Point2d(x0[j], y0[j]), Point2d(x1[j], y1[j])))
+                visit(j);
     }
 
 private:
+    double along(const Point2d& p) const { return normal.y * (p.x - origin.x) - normal.x * (p.y - origin.y); }
+
     Point2d origin, normal;
-    double limit;
+    double limit, baseEnd;
     bool open;
 };
 
@@ -190,7 +287,7 @@ void mergeIntoBaselines(GroupWorkspace& ws, const MergingParams& params, const M
         {
             const Vec2d span = sweep.project(geometry[b]);
             ws.baselineStarts.push_back(std::make_pair(span[0], b));
-            maxBaselineLength = std::max(maxBaselineLength, segmentLength(geometry[b]));
+            maxBaselineLength = std::max(maxBaselineLength, ws.length[b]);
             maxBaselineExtent = std::max(maxBaselineExtent, span[1] - span[0]);
         }
         std::sort(ws.baselineStarts.begin(), ws.baselineStarts.end());
@@ -212,7 +309,7 @@ void mergeIntoBaselines(GroupWorkspace& ws, const MergingParams& params, const M
             for (; it != ws.baselineStarts.end() && it->first <= span[1] + reach; ++it)
             {
                 const int b = it->second;
-                if (passes(geometry[b], geometry[s], params, mask, score) &&
+                if (passes(geometry[b], geometry[s], ws.length[b], ws.length[s], params, mask, score) &&
                     (score > best.score || (score == best.score && b < best.baseline)))
                     best = { score, s, b };
             }
@@ -228,9 +325,12 @@ void mergeIntoBaselines(GroupWorkspace& ws, const MergingParams& params, const M
         double score;
         for (const MergeCandidate& c : ws.candidates)
         {
-            if (!passes(geometry[c.baseline], geometry[c.segment], params, mask, score))
+            if (!passes(geometry[c.baseline], geometry[c.segment], ws.length[c.baseline], ws.length[c.segment], params,
+                        mask, score))
                 continue;
-            geometry[c.baseline] = fuseSegments(geometry[c.baseline], geometry[c.segment]);
+            geometry[c.baseline] = fuseSegmentsOfLengths(geometry[c.baseline], geometry[c.segment],
+                                                         ws.length[c.baseline], ws.length[c.segment]);
+            ws.length[c.baseline] = segmentLength(geometry[c.baseline]);
             ws.consumed[c.segment] = 1;
             ws.fusedInto[c.segment] = c.baseline;
             sweep.remove(c.segment);
@@ -251,14 +351,14 @@ void mergeIntoBaselines(GroupWorkspace& ws, const MergingParams& params, const M
         {
             ws.isChanged[b] = 0;
             const Vec2d span = sweep.project(geometry[b]);
-            const double reach = withSlack(params.proximityRatio * 0.5 * (segmentLength(geometry[b]) + maxPending));
+            const double reach = withSlack(params.proximityRatio * 0.5 * (ws.length[b] + maxPending));
             const double low = span[0] - reach - withSlack(maxPending), high = span[1] + reach;
             int firstLane, lastLane;
             sweep.lanesNear(geometry[b], low, high + withSlack(maxPending), params.maxPerpendicularOffset,
                             firstLane, lastLane);
             for (int lane = firstLane; lane <= lastLane; lane++)
-                for (int p = sweep.firstStartingFrom(lane, low); p < sweep.laneEnd(lane) && sweep.start(p) <= high;
-                     p = sweep.next(p))
+                for (int p = sweep.filedFrom(sweep.lowerBound(lane, low));
+                     p < sweep.laneEnd(lane) && sweep.start(p) <= high; p = sweep.next(p))
                     if (sweep.end(p) >= span[0] - reach)
                         ws.dirty[sweep.id(p)] = 1;
         }
@@ -267,48 +367,62 @@ void mergeIntoBaselines(GroupWorkspace& ws, const MergingParams& params, const M
 
 // Every segment, from the longest down, absorbs the best-scoring shorter segment of its group
 // again and again until none passes; equal lengths go by index. Unlike the paper's rule, two
-// long collinear pieces of one edge can join. The shorter segments are visited outwards from
-// the base's projection and the visit stops where no segment can reach the best score so far.
+// long collinear pieces of one edge can join. In a large group the shorter segments are visited
+// outwards from the base's projection and the visit stops where no segment can reach the best
+// score so far; in a smaller one each is tested against the base's line and projection.
 void mergeLongestFirst(GroupWorkspace& ws, const MergingParams& params, const Mat& mask)
 {
     std::vector<Vec4f>& geometry = ws.geometry;
     const int n = (int)geometry.size();
-    ws.order.resize(n);
+    ws.byLength.resize(n);
     ws.ids.resize(n);
     for (int i = 0; i < n; i++)
     {
         ws.length[i] = segmentLength(geometry[i]);
-        ws.order[i] = ws.ids[i] = i;
+        ws.byLength[i] = std::make_pair(-ws.length[i], i);
+        ws.ids[i] = i;
     }
-    // Longest first, equal lengths by index (a stable sort, without its temporary buffer).
-    std::sort(ws.order.begin(), ws.order.end(), [&](int a, int b) {
-        return ws.length[a] > ws.length[b] || (ws.length[a] == ws.length[b] && a < b);
-    });
+    // Longest first, equal lengths by index (a stable sort, without its temporary buffer; the
+    // keys beside the indices, not behind them).
+    std::sort(ws.byLength.begin(), ws.byLength.end());
+    ws.order.resize(n);
     ws.rank.resize(n);
+    for (int c = 0; c < 4; c++)
+        ws.ranked[c].resize(n);
     for (int k = 0; k < n; k++)
+    {
+        ws.order[k] = ws.byLength[k].second;
+        const Vec4f& s = geometry[ws.order[k]];
         ws.rank[ws.order[k]] = k;
+        for (int c = 0; c < 4; c++)
+            ws.ranked[c][k] = s[c];
+    }
 
-    // Filed: the segments that may still fuse into the current base (shorter, not consumed).
+    // Filed: the segments that may still fuse into the current base (shorter, not consumed). A
+    // smaller group is compared pair by pair instead, which costs less than filing it.
     ProjectionSweep& sweep = ws.sweep;
-    sweep.build(geometry, ws.ids, unitDirection(geometry[ws.order[0]]), laneWidth(params));
+    const bool sweeping = n >= kSweptGroupSize;
+    if (sweeping)
+        sweep.build(geometry, ws.ids, unitDirection(geometry[ws.order[0]]), laneWidth(params));
     for (int k = 0; k < n; k++)
     {
         const int base = ws.order[k];
         if (ws.consumed[base])
             continue;
-        sweep.remove(base);
+        if (sweeping)
+            sweep.remove(base);
         const double maxOther = k + 1 < n ? ws.length[ws.order[k + 1]] : 0.0;
         for (;;)
         {
             const Vec4f& b = geometry[base];
-            const Reach reach(segmentLength(b), maxOther, params);
-            const Vec2d span = sweep.project(b);
+            const Reach reach(ws.length[base], maxOther, params);
             int best = -1;
             double bestScore = -1, score;
             double radius = reach(params.mergeThreshold);
             const LineGate gate(b, params.maxPerpendicularOffset);
-            auto consider = [&](int seg) {
-                if (gate.mayPass(geometry[seg]) && passes(b, geometry[seg], params, mask, score) &&
+            // seg's geometry is s (the sweep's copy of it when filed).
+            auto consider = [&](int seg, const Vec4f& s) {
+                if (gate.mayPass(s) && passes(b, s, ws.length[base], ws.length[seg], params, mask, score) &&
                     (score > bestScore || (score == bestScore && ws.rank[seg] < ws.rank[best])))
                 {
                     best = seg;
@@ -316,28 +430,49 @@ void mergeLongestFirst(GroupWorkspace& ws, const MergingParams& params, const Ma
                     radius = reach(score);
                 }
             };
-            // In the lanes the base's line crosses: ahead of the base's projection, then
-            // overlapping or behind it.
-            const double maxExtent = withSlack(maxOther);
-            int firstLane, lastLane;
-            sweep.lanesNear(b, span[0] - radius - maxExtent, span[1] + radius + maxExtent,
-                            params.maxPerpendicularOffset, firstLane, lastLane);
-            for (int lane = firstLane; lane <= lastLane; lane++)
+            if (!sweeping)
             {
-                for (int p = sweep.firstStartingFrom(lane, span[1]);
-                     p < sweep.laneEnd(lane) && sweep.start(p) - span[1] <= radius; p = sweep.next(p))
-                    consider(sweep.id(p));
-                for (int p = sweep.lastStartingBefore(lane, span[1]);
-                     p >= sweep.laneBegin(lane) && sweep.start(p) + maxExtent >= span[0] - radius; p = sweep.previous(p))
-                    if (span[0] - sweep.end(p) <= radius)
-                        consider(sweep.id(p));
+                // Every shorter segment of the group near the base's line whose projection comes
+                // within the radius.
+                gate.visitMayPass(&ws.ranked[0][0], &ws.ranked[1][0], &ws.ranked[2][0], &ws.ranked[3][0], k + 1, n,
+                                  [&](int j) {
+                                      const int seg = ws.order[j];
+                                      if (!ws.consumed[seg] &&
+                                          gate.gapAlong(Point2d(ws.ranked[0][j], ws.ranked[1][j]),
+                                                        Point2d(ws.ranked[2][j], ws.ranked[3][j])) <= radius)
+                                          consider(seg, geometry[seg]);
+                                  });
+            }
+            else
+            {
+                // In the lanes the base's line crosses: ahead of the base's projection, then
+                // overlapping or behind it.
+                const Vec2d span = sweep.project(b);
+                const double maxExtent = withSlack(maxOther);
+                int firstLane, lastLane;
+                sweep.lanesNear(b, span[0] - radius - maxExtent, span[1] + radius + maxExtent,
+                                params.maxPerpendicularOffset, firstLane, lastLane);
+                for (int lane = firstLane; lane <= lastLane; lane++)
+                {
+                    const int ahead = sweep.lowerBound(lane, span[1]);
+                    for (int p = sweep.filedFrom(ahead); p < sweep.laneEnd(lane) && sweep.start(p) - span[1] <= radius;
+                         p = sweep.next(p))
+                        consider(sweep.id(p), sweep.segment(p));
+                    for (int p = sweep.filedBefore(ahead);
+                         p >= sweep.laneBegin(lane) && sweep.start(p) + maxExtent >= span[0] - radius;
+                         p = sweep.previous(p))
+                        if (span[0] - sweep.end(p) <= radius)
+                            consider(sweep.id(p), sweep.segment(p));
+                }
             }
             if (best < 0)
                 break;
-            geometry[base] = fuseSegments(geometry[base], geometry[best]);
+            geometry[base] = fuseSegmentsOfLengths(geometry[base], geometry[best], ws.length[base], ws.length[best]);
+            ws.length[base] = segmentLength(geometry[base]);
             ws.consumed[best] = 1;
             ws.fusedInto[best] = base;
-            sweep.remove(best);
+            if (sweeping)
+                sweep.remove(best);
         }
     }
 }
@@ -356,20 +491,9 @@ double perpendicularOffset(const Vec4f& baseline, const Vec4f& other)
                     pointToLineDistance(endOf(other), baseline));
 }
 
-// Reach (above) relies on these terms' bounds: Sd <= 1, Sp <= 1 - gap / Dth, Sl <= the ratio of
-// the lengths.
 SimilarityTerms similarityTerms(const Vec4f& baseline, const Vec4f& other, double proximityRatio)
 {
-    const double lb = segmentLength(baseline), lo = segmentLength(other);
-    SimilarityTerms t;
-    // A point has no direction: it must not score as if it pointed along the baseline.
-    t.direction = lb > 0 && lo > 0 ? std::max(unitDirection(baseline).dot(unitDirection(other)), 0.0) : 0.0;
-    const double threshold = proximityRatio * 0.5 * (lb + lo);
-    const double dmin = segmentDistance(baseline, other);
-    t.proximity = threshold > 0 ? std::max(1.0 - dmin / threshold, 0.0) : (dmin > 0 ? 0.0 : 1.0);
-    const double longer = std::max(lb, lo);
-    t.length = longer > 0 ? 1.0 - std::abs(lb - lo) / longer : 1.0;
-    return t;
+    return similarityTermsOfLengths(baseline, other, segmentLength(baseline), segmentLength(other), proximityRatio);
 }
 
 // Reach (above) bounds this score from the gap between two projections: change both together.
@@ -381,38 +505,7 @@ double similarityScore(const SimilarityTerms& t, const MergingParams& p)
 
 Vec4f fuseSegments(const Vec4f& baseline, const Vec4f& other)
 {
-    const double l1 = segmentLength(baseline), l2 = segmentLength(other);
-    const Point2d m1 = (startOf(baseline) + endOf(baseline)) * 0.5;
-    const Point2d m2 = (startOf(other) + endOf(other)) * 0.5;
-    const Point2d centre = l1 + l2 > 0 ? (l1 * m1 + l2 * m2) * (1.0 / (l1 + l2)) : m1;
-
-    // The least-squares line of the two as uniform masses: the principal axis of their second
-    // moments about the centre, oriented like the baseline. Parallel runs one step apart, the
-    // pieces of an aliased edge, fuse along the line through them; the mean of their directions
-    // would keep the runs' direction, and the next run would fall outside the perpendicular gate.
-    const Vec3d moments = secondMoment(baseline, l1, centre) + secondMoment(other, l2, centre);
-    const Point2d u1 = unitDirection(baseline);
-    // The eigenvector of the larger eigenvalue, from whichever of its two forms is longer: exact
-    // along an axis (a border's pieces stay on it).
-    const double half = 0.5 * (moments[0] - moments[2]);
-    const double lambda = 0.5 * (moments[0] + moments[2]) + std::sqrt(half * half + moments[1] * moments[1]);
-    const Point2d fromXy(moments[1], lambda - moments[0]), fromYy(lambda - moments[2], moments[1]);
-    Point2d dir = fromXy.dot(fromXy) > fromYy.dot(fromYy) ? fromXy : fromYy;
-    const double dirNorm = norm(dir);
-    dir = dirNorm > 0 ? dir * (1.0 / dirNorm) : u1;
-    if (dir.dot(u1) < 0)
-        dir = -dir;
-
-    const Point2d ends[4] = { startOf(baseline), endOf(baseline), startOf(other), endOf(other) };
-    double tMin = 0, tMax = 0;
-    for (int i = 0; i < 4; i++)
-    {
-        const double t = (ends[i] - centre).dot(dir);
-        tMin = i == 0 ? t : std::min(tMin, t);
-        tMax = i == 0 ? t : std::max(tMax, t);
-    }
-    const Point2d a = centre + tMin * dir, b = centre + tMax * dir;
-    return Vec4f((float)a.x, (float)a.y, (float)b.x, (float)b.y);
+    return fuseSegmentsOfLengths(baseline, other, segmentLength(baseline), segmentLength(other));
 }
 
 void ProjectionSweep::build(const std::vector<Vec4f>& geometry, const std::vector<int>& filed, const Point2d& dir,
@@ -443,6 +536,7 @@ void ProjectionSweep::build(const std::vector<Vec4f>& geometry, const std::vecto
     starts.resize(m);
     ends.resize(m);
     ids.resize(m);
+    segments.resize(m);
     laneStart.assign(laneCount + 1, 0);
     positionOf.assign(geometry.size(), -1);
     nextFiled.resize(m + 1);
@@ -450,6 +544,7 @@ void ProjectionSweep::build(const std::vector<Vec4f>& geometry, const std::vecto
     for (int p = 0; p < m; p++)
     {
         ids[p] = sortBuffer[p].second;
+        segments[p] = geometry[ids[p]];
         starts[p] = sortBuffer[p].first.second;
         ends[p] = project(geometry[ids[p]])[1];
         positionOf[ids[p]] = p;
@@ -501,37 +596,19 @@ void ProjectionSweep::remove(int id)
     previousFiled[p + 1] = p;
 }
 
-int ProjectionSweep::findNext(int p)
+int ProjectionSweep::lowerBound(int lane, double value) const
 {
-    while (nextFiled[p] != p)
+    // std::lower_bound without a branch on the comparisons, which are unpredictable.
+    int first = laneStart[lane], count = laneStart[lane + 1] - first;
+    if (count == 0)
+        return first;
+    while (count > 1)
     {
-        nextFiled[p] = nextFiled[nextFiled[p]];
-        p = nextFiled[p];
+        const int half = count / 2;
+        first = starts[first + half] < value ? first + half : first;
+        count -= half;
     }
-    return p;
-}
-
-int ProjectionSweep::findPrevious(int p)
-{
-    int q = p + 1;
-    while (previousFiled[q] != q)
-    {
-        previousFiled[q] = previousFiled[previousFiled[q]];
-        q = previousFiled[q];
-    }
-    return q - 1;
-}
-
-int ProjectionSweep::firstStartingFrom(int lane, double value)
-{
-    const std::vector<double>::const_iterator begin = starts.begin() + laneStart[lane], end = starts.begin() + laneStart[lane + 1];
-    return findNext((int)(std::lower_bound(begin, end, value) - starts.begin()));
-}
-
-int ProjectionSweep::lastStartingBefore(int lane, double value)
-{
-    const std::vector<double>::const_iterator begin = starts.begin() + laneStart[lane], end = starts.begin() + laneStart[lane + 1];
-    return findPrevious((int)(std::lower_bound(begin, end, value) - starts.begin()) - 1);
+    return first + (starts[first] < value);
 }
 
 namespace {

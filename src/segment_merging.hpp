@@ -41,26 +41,48 @@ public:
     //! Positions of lane l are laneBegin(l) .. laneEnd(l) - 1.
     int laneBegin(int lane) const { return laneStart[lane]; }
     int laneEnd(int lane) const { return laneStart[lane + 1]; }
-    //! First filed position of the lane whose projection starts at or after value; at least
-    //! laneEnd(lane) when none.
-    int firstStartingFrom(int lane, double value);
-    //! Last filed position of the lane whose projection starts before value; below
-    //! laneBegin(lane) when none.
-    int lastStartingBefore(int lane, double value);
+    //! Position of the first segment of the lane, filed or removed, whose projection starts at or
+    //! after value; laneEnd(lane) when none.
+    int lowerBound(int lane, double value) const;
+    //! The first filed position at or after position; at least the end of its lane when none.
+    int filedFrom(int position) { return findNext(position); }
+    //! The last filed position before position; below the beginning of its lane when none.
+    int filedBefore(int position) { return findPrevious(position - 1); }
     int next(int position) { return findNext(position + 1); }
     int previous(int position) { return findPrevious(position - 1); }
     int id(int position) const { return ids[position]; }
+    //! The segment filed at position, as it was filed (a filed segment does not change).
+    const Vec4f& segment(int position) const { return segments[position]; }
     double start(int position) const { return starts[position]; }
     double end(int position) const { return ends[position]; }
 
 private:
-    int findNext(int position);
-    int findPrevious(int position);
+    // Defined here to be inlined: merging calls them for every segment it visits.
+    int findNext(int p)
+    {
+        while (nextFiled[p] != p)
+        {
+            nextFiled[p] = nextFiled[nextFiled[p]];
+            p = nextFiled[p];
+        }
+        return p;
+    }
+    int findPrevious(int p)
+    {
+        int q = p + 1;
+        while (previousFiled[q] != q)
+        {
+            previousFiled[q] = previousFiled[previousFiled[q]];
+            q = previousFiled[q];
+        }
+        return q - 1;
+    }
 
     Point2d direction, normal;
     double laneOrigin = 0, laneSize = 1;
     std::vector<double> starts, ends;
     std::vector<int> ids;
+    std::vector<Vec4f> segments;    //!< geometry of each position
     std::vector<int> laneStart;     //!< compressed rows: the positions of each lane
     std::vector<int> positionOf;    //!< position of each geometry index (-1: not filed)
     std::vector<int> nextFiled;     //!< union-find links to the next filed position (size() is a sentinel)
@@ -84,7 +106,9 @@ struct GroupWorkspace
     std::vector<int> fusedInto;   //!< the segment each consumed one was fused into
     std::vector<int> outputOf;    //!< index in the merged output of each surviving segment
     std::vector<double> length;
+    std::vector<std::pair<double, int> > byLength;  //!< (-length, index) of each segment
     std::vector<int> order, rank, ids;
+    std::vector<double> ranked[4];  //!< x0, y0, x1, y1 of segment order[k] as it was in the input
     std::vector<int> baselines, pending, changed;
     std::vector<char> dirty, isChanged;
     std::vector<MergeCandidate> candidates, bestOf;

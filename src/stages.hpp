@@ -299,6 +299,11 @@ CV_EXPORTS double similarityScore(const SimilarityTerms& terms, const MergingPar
 //! endpoints; the result keeps the baseline's orientation.
 CV_EXPORTS Vec4f fuseSegments(const Vec4f& baseline, const Vec4f& other);
 
+//! MERGE_LONGEST_FIRST compares each base with every shorter segment of a group of fewer segments,
+//! and files a group of at least this many in a projection sweep (segment_merging.hpp), which
+//! keeps the work near-linear: with the same result, the sweep's set-up costs more below it.
+constexpr int kSweptGroupSize = 256;
+
 //! Buffers of stage 3, reused from group to group and call to call (segment_merging.hpp).
 struct MergeWorkspace;
 

@@ -208,6 +208,49 @@ TEST(LSDAdvance_MergingSweep, weights_without_proximity_equal_the_all_pairs_rule
     }
 }
 
+// MERGE_LONGEST_FIRST compares every pair of a smaller group and files a larger one in the sweep:
+// one group of parallel chains 3 px apart (a textured facade), pieces of mixed lengths, a few
+// reversed or of zero length, beside twins 2 px away, against the rule.
+TEST(LSDAdvance_MergingSweep, a_group_large_enough_for_the_sweep_equals_the_all_pairs_rule)
+{
+    RNG rng(17);
+    std::vector<Vec4f> segments;
+    const Point2d u(std::cos(0.5), std::sin(0.5)), normal(-u.y, u.x);
+    for (int chain = 0; chain < 16; chain++)
+        for (double t = rng.uniform(0.0, 20.0); t < 300.0;)
+        {
+            const double piece = rng.uniform(0, 8) == 0 ? 0.0 : rng.uniform(2.0, 30.0);
+            const Point2d off = normal * (3.0 * chain + rng.uniform(-0.6, 0.6));
+            const Point2d a = u * t + off, b = u * (t + piece) + off;
+            const bool reversed = rng.uniform(0, 10) == 0;
+            segments.push_back(reversed ? Vec4f((float)b.x, (float)b.y, (float)a.x, (float)a.y)
+                                        : Vec4f((float)a.x, (float)a.y, (float)b.x, (float)b.y));
+            if (rng.uniform(0, 4) == 0)
+                segments.push_back(Vec4f((float)(a.x + 2 * normal.x), (float)(a.y + 2 * normal.y),
+                                         (float)(b.x + 2 * normal.x), (float)(b.y + 2 * normal.y)));
+            t += piece + rng.uniform(0.0, 6.0);
+        }
+    lsda::SegmentGroups groups;
+    lsda::groupSegments(segments, lsda::GroupingParams(), groups);
+    int largest = 0;
+    for (int g = 0; g < groups.count(); g++)
+        largest = std::max(largest, groups.offsets[g + 1] - groups.offsets[g]);
+    ASSERT_GE(largest, lsda::kSweptGroupSize);
+    lsda::MergingParams p;
+    p.mergeStrategy = LSDAdvance::MERGE_LONGEST_FIRST;
+    for (double ratio : { 0.1, 1.0 })
+        for (double threshold : { 0.0, 0.6 })
+        {
+            SCOPED_TRACE(cv::format("proximityRatio %g, mergeThreshold %g", ratio, threshold));
+            p.proximityRatio = ratio;
+            p.mergeThreshold = threshold;
+            std::vector<Vec4f> merged;
+            lsda::mergeGroups(segments, groups, p, merged);
+            EXPECT_EQ(mergeReference(segments, groups, p), merged);
+            EXPECT_LT(merged.size(), segments.size());
+        }
+}
+
 TEST(LSDAdvance_MergingSweep, one_group_of_thousands_of_collinear_pieces_becomes_one_segment)
 {
     // 4000 pieces of one edge, 1 px apart: a single group. Longest first absorbs them one by one;
