@@ -138,7 +138,8 @@ int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<floa
     return count;
 }
 
-void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& p)
+void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& p,
+                           KnownResponses& known)
 {
     params = p;
     const bool filtering = p.lengthFilterMode != LSDAdvance::LENGTH_FILTER_NONE;
@@ -146,15 +147,14 @@ void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, cons
     // The responses of the base segments give the threshold of the strong ones, as their lengths
     // give the length threshold; computed only when strong segments are kept.
     strong = filtering && p.keepStrongSegments && gray;
-    baseResponses.clear();
-    if (strong)
-        lineResponses(*gray, base, baseResponses);
-    unitMinResponse = strong ? p.lengthThresholdScale * adaptiveMinResponse(baseResponses, 1.0, p.lengthThresholdRule)
+    unitMinResponse = strong ? p.lengthThresholdScale *
+                                   adaptiveMinResponse(known.complete(*gray, base), 1.0, p.lengthThresholdRule)
                              : 0.0;
 }
 
-void LengthFilter::apply(const std::vector<Vec4f>& in, bool inIsBase, const Mat* gray, const KeptCounts& history,
-                         std::vector<Vec4f>& kept, std::vector<int>& keptFrom, LSDAdvanceStats& stats)
+void LengthFilter::apply(const std::vector<Vec4f>& in, const Mat* gray, const KeptCounts& history,
+                         KnownResponses& known, std::vector<Vec4f>& kept, std::vector<int>& keptFrom,
+                         LSDAdvanceStats& stats)
 {
     if (params.lengthFilterMode == LSDAdvance::LENGTH_FILTER_NONE)
     {
@@ -165,10 +165,9 @@ void LengthFilter::apply(const std::vector<Vec4f>& in, bool inIsBase, const Mat*
         stats.filteredSegments = (int)in.size();
         return;
     }
-    // Fused segments have responses of their own; the base segments' are known.
-    if (strong && !inIsBase)
-        lineResponses(*gray, in, mergedResponses);
-    const std::vector<float>& responses = strong && !inIsBase ? mergedResponses : baseResponses;
+    // Fused segments have responses of their own; the others have their base segment's.
+    const std::vector<float> none;
+    const std::vector<float>& responses = strong ? known.complete(*gray, in) : none;
     double alpha = 1.0;  // the first two frames of a sequence, and LENGTH_FILTER_ADAPTIVE
     if (history.frames >= 2)
     {

@@ -9,6 +9,7 @@
 
 #include "precomp.hpp"
 #include "opencv2/core/hal/intrin.hpp"
+#include <cstring>
 
 namespace cv {
 namespace ximgproc {
@@ -162,7 +163,7 @@ double meanContrast(const Mat& gray, const Vec4f& s)
 // costs the pool more than their samples.
 constexpr int kSegmentsPerTask = 64;
 
-// The responses of a range of segments; each is computed alone.
+// The responses of a range of segments that have none yet (negative); each is computed alone.
 class SegmentResponses CV_FINAL : public ParallelLoopBody
 {
 public:
@@ -174,6 +175,8 @@ public:
         const int end = std::min((int)segments.size(), range.end * kSegmentsPerTask);
         for (int i = range.start * kSegmentsPerTask; i < end; i++)
         {
+            if (responses[i] >= 0.f)
+                continue;
             const double contrast = meanContrast(gray, segments[i]) / 255.0;
             // A segment the frame cuts shows a part of its line that changes from view to view, and
             // LBD's bands reach out of the image: it is found again less often, and matched wrongly
@@ -189,15 +192,66 @@ private:
     std::vector<float>& responses;
 };
 
+// The responses of the segments whose response is negative (not known yet), one per segment.
+void unknownResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::vector<float>& responses)
+{
+    CV_Assert(responses.size() == segments.size());
+    if (std::none_of(responses.begin(), responses.end(), [](float r) { return r < 0.f; }))
+        return;
+    // Before the tasks: the caller gets the error.
+    CV_CheckTypeEQ(gray.type(), CV_8UC1, "lineResponses samples a gray image");
+    const int tasks = ((int)segments.size() + kSegmentsPerTask - 1) / kSegmentsPerTask;
+    parallel_for_(Range(0, tasks), SegmentResponses(gray, segments, responses), tasks);
+}
+
 } // namespace
 
 void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::vector<float>& responses)
 {
-    if (!segments.empty())  // before the tasks: the caller gets the error
-        CV_CheckTypeEQ(gray.type(), CV_8UC1, "lineResponses samples a gray image");
-    responses.resize(segments.size());
-    const int tasks = ((int)segments.size() + kSegmentsPerTask - 1) / kSegmentsPerTask;
-    parallel_for_(Range(0, tasks), SegmentResponses(gray, segments, responses), tasks);
+    responses.assign(segments.size(), -1.f);
+    unknownResponses(gray, segments, responses);
+}
+
+void KnownResponses::clear()
+{
+    known.clear();
+}
+
+void KnownResponses::followKept(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                                const std::vector<int>& keptFrom)
+{
+    if (known.empty())
+        return;
+    CV_Assert(known.size() == in.size() && keptFrom.size() == out.size());
+    carried.resize(out.size());
+    for (size_t j = 0; j < out.size(); j++)
+    {
+        const int i = keptFrom[j];
+        // The response is that of the segment's coordinates: it goes with them, bit for bit.
+        carried[j] = i >= 0 && std::memcmp(&out[j], &in[i], sizeof(Vec4f)) == 0 ? known[i] : -1.f;
+    }
+    known.swap(carried);
+}
+
+void KnownResponses::followMerged(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                                  const std::vector<int>& mergedInto)
+{
+    if (known.empty())
+        return;
+    // Each merged segment from one of its pieces: a survivor that fused nothing is that piece.
+    pieceOf.assign(out.size(), -1);
+    for (size_t i = 0; i < mergedInto.size(); i++)
+        if (mergedInto[i] >= 0)
+            pieceOf[mergedInto[i]] = (int)i;
+    followKept(in, out, pieceOf);
+}
+
+const std::vector<float>& KnownResponses::complete(const Mat& gray, const std::vector<Vec4f>& segments)
+{
+    if (known.empty())
+        known.assign(segments.size(), -1.f);
+    unknownResponses(gray, segments, known);
+    return known;
 }
 
 } // namespace lsda

@@ -32,23 +32,26 @@ void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<in
 }
 
 void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, double minLength, int maxLines,
-                          std::vector<Vec4f>& selected, std::vector<float>& responses, std::vector<int>& keptFrom)
+                          KnownResponses& known, std::vector<Vec4f>& selected, std::vector<float>& responses,
+                          std::vector<int>& keptFrom)
 {
     // Every line is at least 0 long: without a minimum, the lines themselves, no length computed.
     const bool everyLine = minLength <= 0;
     if (!everyLine)
+    {
         keepLongOrStrong(lines, std::vector<float>(), minLength, 0.0, longEnough, &longFrom);
+        known.followKept(lines, longEnough, longFrom);
+    }
     const std::vector<Vec4f>& candidates = everyLine ? lines : longEnough;
     // The responses of the lines that passed the minimum length only: with an image they are the
     // order, and the caller's (getLastResponses, KeyLine::response).
-    if (gray)
-        lineResponses(*gray, candidates, keys);
-    else
+    if (!gray)
     {
-        keys.resize(candidates.size());
+        lengths.resize(candidates.size());
         for (size_t i = 0; i < candidates.size(); i++)
-            keys[i] = (float)segmentLength(candidates[i]);
+            lengths[i] = (float)segmentLength(candidates[i]);
     }
+    const std::vector<float>& keys = gray ? known.complete(*gray, candidates) : lengths;
     order.resize(candidates.size());
     for (size_t i = 0; i < order.size(); i++)
         order[i] = (int)i;
