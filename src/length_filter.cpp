@@ -75,10 +75,30 @@ double thresholdOf(double sum, double sumSq, double n, double alpha, int rule)
     return std::max((1.0 - std::abs(mean - stddev) / mean) * mean * alpha, 0.0);
 }
 
+// Relative margin around the square of a positive length within which the squared length of a
+// segment does not decide whether segmentLength() reaches that length: hypot is within an ulp of
+// the true length and dx^2 + dy^2 within a few of its square, far inside the margin.
+constexpr double kSquareMargin = 1e-9;
+
+// segmentLength(s) >= length, decided without libm's hypot unless the squared length is too near.
+bool atLeastAsLong(const Vec4f& s, double length)
+{
+    if (length > 0)
+    {
+        const double dx = (double)s[2] - s[0], dy = (double)s[3] - s[1];
+        const double squared = dx * dx + dy * dy, square = length * length;
+        if (squared > square * (1 + kSquareMargin))
+            return true;
+        if (squared < square * (1 - kSquareMargin))
+            return false;
+    }
+    return segmentLength(s) >= length;
+}
+
 bool longOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses, size_t i,
                   double minLength, double minResponse)
 {
-    return segmentLength(segments[i]) >= minLength || (!responses.empty() && responses[i] >= minResponse);
+    return atLeastAsLong(segments[i], minLength) || (!responses.empty() && responses[i] >= minResponse);
 }
 
 void checkResponses(const std::vector<Vec4f>& segments, const std::vector<float>& responses)
