@@ -75,10 +75,30 @@ double thresholdOf(double sum, double sumSq, double n, double alpha, int rule)
     return std::max((1.0 - std::abs(mean - stddev) / mean) * mean * alpha, 0.0);
 }
 
+// Relative margin around the square of a positive length within which the squared length of a
+// segment does not decide whether segmentLength() reaches that length: hypot is within an ulp of
+// the true length and dx^2 + dy^2 within a few of its square, far inside the margin.
+constexpr double kSquareMargin = 1e-9;
+
+// segmentLength(s) >= length, decided without libm's hypot unless the squared length is too near.
+bool atLeastAsLong(const Vec4f& s, double length)
+{
+    if (length > 0)
+    {
+        const double dx = (double)s[2] - s[0], dy = (double)s[3] - s[1];
+        const double squared = dx * dx + dy * dy, square = length * length;
+        if (squared > square * (1 + kSquareMargin))
+            return true;
+        if (squared < square * (1 - kSquareMargin))
+            return false;
+    }
+    return segmentLength(s) >= length;
+}
+
 bool longOrStrong(const std::vector<Vec4f>& segments, const std::vector<float>& responses, size_t i,
                   double minLength, double minResponse)
 {
-    return segmentLength(segments[i]) >= minLength || (!responses.empty() && responses[i] >= minResponse);
+    return atLeastAsLong(segments[i], minLength) || (!responses.empty() && responses[i] >= minResponse);
 }
 
 void checkResponses(const std::vector<Vec4f>& segments, const std::vector<float>& responses)
@@ -138,7 +158,8 @@ int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<floa
     return count;
 }
 
-void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& p)
+void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& p,
+                           KnownResponses& known)
 {
     params = p;
     const bool filtering = p.lengthFilterMode != LSDAdvance::LENGTH_FILTER_NONE;
@@ -146,15 +167,14 @@ void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, cons
     // The responses of the base segments give the threshold of the strong ones, as their lengths
     // give the length threshold; computed only when strong segments are kept.
     strong = filtering && p.keepStrongSegments && gray;
-    baseResponses.clear();
-    if (strong)
-        lineResponses(*gray, base, baseResponses);
-    unitMinResponse = strong ? p.lengthThresholdScale * adaptiveMinResponse(baseResponses, 1.0, p.lengthThresholdRule)
+    unitMinResponse = strong ? p.lengthThresholdScale *
+                                   adaptiveMinResponse(known.complete(*gray, base), 1.0, p.lengthThresholdRule)
                              : 0.0;
 }
 
-void LengthFilter::apply(const std::vector<Vec4f>& in, bool inIsBase, const Mat* gray, const KeptCounts& history,
-                         std::vector<Vec4f>& kept, std::vector<int>& keptFrom, LSDAdvanceStats& stats)
+void LengthFilter::apply(const std::vector<Vec4f>& in, const Mat* gray, const KeptCounts& history,
+                         KnownResponses& known, std::vector<Vec4f>& kept, std::vector<int>& keptFrom,
+                         LSDAdvanceStats& stats)
 {
     if (params.lengthFilterMode == LSDAdvance::LENGTH_FILTER_NONE)
     {
@@ -165,10 +185,9 @@ void LengthFilter::apply(const std::vector<Vec4f>& in, bool inIsBase, const Mat*
         stats.filteredSegments = (int)in.size();
         return;
     }
-    // Fused segments have responses of their own; the base segments' are known.
-    if (strong && !inIsBase)
-        lineResponses(*gray, in, mergedResponses);
-    const std::vector<float>& responses = strong && !inIsBase ? mergedResponses : baseResponses;
+    // Fused segments have responses of their own; the others have their base segment's.
+    const std::vector<float> none;
+    const std::vector<float>& responses = strong ? known.complete(*gray, in) : none;
     double alpha = 1.0;  // the first two frames of a sequence, and LENGTH_FILTER_ADAPTIVE
     if (history.frames >= 2)
     {

@@ -9,6 +9,7 @@
 
 #include "precomp.hpp"
 #include "opencv2/core/hal/intrin.hpp"
+#include <cstring>
 
 namespace cv {
 namespace ximgproc {
@@ -37,73 +38,86 @@ float grayAt(const Mat& gray, float x, float y)
 
 #if CV_SIMD128
 // bilinear() at four points of the image's cells (x in [0, cols - 2], y in [0, rows - 2]), with
-// its float operations lane by lane (the same values); each pair of horizontal neighbours is
-// read in one 16-bit load.
-v_float32x4 bilinear4(const Mat& gray, const v_float32x4& x, const v_float32x4& y)
+// its float operations lane by lane (the same values). Each pair of horizontal neighbours is read
+// in one 16-bit load, the four top pairs and the four bottom pairs into one vector.
+inline v_float32x4 bilinear4(const uchar* data, size_t down, const v_float32x4& x, const v_float32x4& y)
 {
     const v_int32x4 ix = v_trunc(x), iy = v_trunc(y);
-    int cx[4], cy[4], top[4], bottom[4];
+    int cx[4], cy[4];
     v_store(cx, ix);
     v_store(cy, iy);
-    const size_t down = gray.step[0];
+    const uchar* cell[4];
     for (int j = 0; j < 4; j++)
-    {
-        const uchar* p = gray.ptr<uchar>(cy[j]) + cx[j];
-        top[j] = p[0] | p[1] << 8;
-        bottom[j] = p[down] | p[down + 1] << 8;
-    }
-    const v_int32x4 low = v_setall_s32(0xFF);
-    const v_int32x4 t(top[0], top[1], top[2], top[3]), b(bottom[0], bottom[1], bottom[2], bottom[3]);
-    const v_int32x4 t0 = t & low, b0 = b & low;
+        cell[j] = data + cy[j] * down + cx[j];
+    const auto pair = [](const uchar* p) { return (ushort)(p[0] | p[1] << 8); };
+    const v_uint16x8 pairs(pair(cell[0]), pair(cell[1]), pair(cell[2]), pair(cell[3]), pair(cell[0] + down),
+                           pair(cell[1] + down), pair(cell[2] + down), pair(cell[3] + down));
+    v_uint32x4 top, bottom;
+    v_expand(pairs, top, bottom);
+    const v_uint32x4 byte = v_setall_u32(0xFF);
+    const v_int32x4 topLeft = v_reinterpret_as_s32(top & byte), topRight = v_reinterpret_as_s32(v_shr<8>(top));
+    const v_int32x4 bottomLeft = v_reinterpret_as_s32(bottom & byte);
+    const v_int32x4 bottomRight = v_reinterpret_as_s32(v_shr<8>(bottom));
     const v_float32x4 fx = x - v_cvt_f32(ix), fy = y - v_cvt_f32(iy);
-    const v_float32x4 upper = v_cvt_f32(t0) + fx * v_cvt_f32(v_shr<8>(t) - t0);
-    const v_float32x4 lower = v_cvt_f32(b0) + fx * v_cvt_f32(v_shr<8>(b) - b0);
+    const v_float32x4 upper = v_cvt_f32(topLeft) + fx * v_cvt_f32(topRight - topLeft);
+    const v_float32x4 lower = v_cvt_f32(bottomLeft) + fx * v_cvt_f32(bottomRight - bottomLeft);
     return upper + fy * (lower - upper);
 }
 #endif
 
 // Sum over the samples p0 + k step (k < samples) of the positive part of gray(p + left) -
-// gray(p - left), directly when `inside` (every probe lies in [0, cols - 2] x [0, rows - 2]) or
-// when both probes of the sample do (grayAt then reads the same four pixels with the same
-// weights), at clamped coordinates otherwise: most samples of a segment near the border are inside.
-// Inside, four samples at a time with the float operations of one; the sum in the same order.
+// gray(p - left), directly when both probes of the sample lie in [0, cols - 2] x [0, rows - 2]
+// (grayAt would read the same four pixels with the same weights), at clamped coordinates
+// otherwise: most samples of a segment near the border are inside. `inside`: every probe is.
+// Four samples at a time with the float operations of one wherever all their probes are inside;
+// the sum in the same order.
 double positiveSteps(const Mat& gray, Point2f p0, Point2f step, Point2f left, int samples, bool inside)
 {
     const float right = (float)(gray.cols - 2), bottom = (float)(gray.rows - 2);
     const auto inCells = [&](Point2f q) { return q.x >= 0.f && q.x <= right && q.y >= 0.f && q.y <= bottom; };
-    double sum = 0.0;
-    int k = 0;
-#if CV_SIMD128
-    if (inside)
-    {
-        const v_float32x4 lanes(0.f, 1.f, 2.f, 3.f), x0 = v_setall_f32(p0.x), y0 = v_setall_f32(p0.y);
-        const v_float32x4 dx = v_setall_f32(step.x), dy = v_setall_f32(step.y);
-        const v_float32x4 lx = v_setall_f32(left.x), ly = v_setall_f32(left.y), zero = v_setzero_f32();
-        float across[4];
-        for (; k + 4 <= samples; k += 4)
-        {
-            const v_float32x4 kf = v_setall_f32((float)k) + lanes;  // exact: k < 2^24
-            const v_float32x4 px = x0 + kf * dx, py = y0 + kf * dy;
-            v_store(across, v_max(bilinear4(gray, px + lx, py + ly) - bilinear4(gray, px - lx, py - ly), zero));
-            for (int j = 0; j < 4; j++)
-                sum += across[j];
-        }
-    }
-#endif
-    for (; k < samples; k++)
-    {
+    const uchar* data = gray.data;
+    const size_t down = gray.step[0];
+    const auto positiveStep = [&](int k) {
         const Point2f p = p0 + (float)k * step, l = p + left, r = p - left;
         float across;
         if (inside || (inCells(l) && inCells(r)))
         {
             const int lx = (int)l.x, ly = (int)l.y, rx = (int)r.x, ry = (int)r.y;
-            across = bilinear(gray.ptr<uchar>(ly) + lx, 1, gray.step[0], l.x - (float)lx, l.y - (float)ly) -
-                     bilinear(gray.ptr<uchar>(ry) + rx, 1, gray.step[0], r.x - (float)rx, r.y - (float)ry);
+            across = bilinear(data + ly * down + lx, 1, down, l.x - (float)lx, l.y - (float)ly) -
+                     bilinear(data + ry * down + rx, 1, down, r.x - (float)rx, r.y - (float)ry);
         }
         else
             across = grayAt(gray, l.x, l.y) - grayAt(gray, r.x, r.y);
-        sum += std::max(across, 0.f);  // the wrong polarity is no evidence for this segment
+        return std::max(across, 0.f);  // the wrong polarity is no evidence for this segment
+    };
+    double sum = 0.0;
+    int k = 0;
+#if CV_SIMD128
+    const v_float32x4 lanes(0.f, 1.f, 2.f, 3.f), x0 = v_setall_f32(p0.x), y0 = v_setall_f32(p0.y);
+    const v_float32x4 dx = v_setall_f32(step.x), dy = v_setall_f32(step.y);
+    const v_float32x4 lx = v_setall_f32(left.x), ly = v_setall_f32(left.y), zero = v_setzero_f32();
+    const v_float32x4 xMax = v_setall_f32(right), yMax = v_setall_f32(bottom);
+    float across[4];
+    for (; k + 4 <= samples; k += 4)
+    {
+        const v_float32x4 kf = v_setall_f32((float)k) + lanes;  // exact: k < 2^24
+        const v_float32x4 px = x0 + kf * dx, py = y0 + kf * dy;
+        const v_float32x4 leftX = px + lx, leftY = py + ly, rightX = px - lx, rightY = py - ly;
+        if (!inside &&
+            !v_check_all((v_min(leftX, rightX) >= zero) & (v_max(leftX, rightX) <= xMax) &
+                         (v_min(leftY, rightY) >= zero) & (v_max(leftY, rightY) <= yMax)))
+        {
+            for (int j = 0; j < 4; j++)
+                sum += positiveStep(k + j);
+            continue;
+        }
+        v_store(across, v_max(bilinear4(data, down, leftX, leftY) - bilinear4(data, down, rightX, rightY), zero));
+        for (int j = 0; j < 4; j++)
+            sum += across[j];
     }
+#endif
+    for (; k < samples; k++)
+        sum += positiveStep(k);
     return sum;
 }
 
@@ -149,7 +163,7 @@ double meanContrast(const Mat& gray, const Vec4f& s)
 // costs the pool more than their samples.
 constexpr int kSegmentsPerTask = 64;
 
-// The responses of a range of segments; each is computed alone.
+// The responses of a range of segments that have none yet (negative); each is computed alone.
 class SegmentResponses CV_FINAL : public ParallelLoopBody
 {
 public:
@@ -161,6 +175,8 @@ public:
         const int end = std::min((int)segments.size(), range.end * kSegmentsPerTask);
         for (int i = range.start * kSegmentsPerTask; i < end; i++)
         {
+            if (responses[i] >= 0.f)
+                continue;
             const double contrast = meanContrast(gray, segments[i]) / 255.0;
             // A segment the frame cuts shows a part of its line that changes from view to view, and
             // LBD's bands reach out of the image: it is found again less often, and matched wrongly
@@ -176,15 +192,66 @@ private:
     std::vector<float>& responses;
 };
 
+// The responses of the segments whose response is negative (not known yet), one per segment.
+void unknownResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::vector<float>& responses)
+{
+    CV_Assert(responses.size() == segments.size());
+    if (std::none_of(responses.begin(), responses.end(), [](float r) { return r < 0.f; }))
+        return;
+    // Before the tasks: the caller gets the error.
+    CV_CheckTypeEQ(gray.type(), CV_8UC1, "lineResponses samples a gray image");
+    const int tasks = ((int)segments.size() + kSegmentsPerTask - 1) / kSegmentsPerTask;
+    parallel_for_(Range(0, tasks), SegmentResponses(gray, segments, responses), tasks);
+}
+
 } // namespace
 
 void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::vector<float>& responses)
 {
-    if (!segments.empty())  // before the tasks: the caller gets the error
-        CV_CheckTypeEQ(gray.type(), CV_8UC1, "lineResponses samples a gray image");
-    responses.resize(segments.size());
-    const int tasks = ((int)segments.size() + kSegmentsPerTask - 1) / kSegmentsPerTask;
-    parallel_for_(Range(0, tasks), SegmentResponses(gray, segments, responses), tasks);
+    responses.assign(segments.size(), -1.f);
+    unknownResponses(gray, segments, responses);
+}
+
+void KnownResponses::clear()
+{
+    known.clear();
+}
+
+void KnownResponses::followKept(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                                const std::vector<int>& keptFrom)
+{
+    if (known.empty())
+        return;
+    CV_Assert(known.size() == in.size() && keptFrom.size() == out.size());
+    carried.resize(out.size());
+    for (size_t j = 0; j < out.size(); j++)
+    {
+        const int i = keptFrom[j];
+        // The response is that of the segment's coordinates: it goes with them, bit for bit.
+        carried[j] = i >= 0 && std::memcmp(&out[j], &in[i], sizeof(Vec4f)) == 0 ? known[i] : -1.f;
+    }
+    known.swap(carried);
+}
+
+void KnownResponses::followMerged(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                                  const std::vector<int>& mergedInto)
+{
+    if (known.empty())
+        return;
+    // Each merged segment from one of its pieces: a survivor that fused nothing is that piece.
+    pieceOf.assign(out.size(), -1);
+    for (size_t i = 0; i < mergedInto.size(); i++)
+        if (mergedInto[i] >= 0)
+            pieceOf[mergedInto[i]] = (int)i;
+    followKept(in, out, pieceOf);
+}
+
+const std::vector<float>& KnownResponses::complete(const Mat& gray, const std::vector<Vec4f>& segments)
+{
+    if (known.empty())
+        known.assign(segments.size(), -1.f);
+    unknownResponses(gray, segments, known);
+    return known;
 }
 
 } // namespace lsda

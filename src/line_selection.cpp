@@ -22,26 +22,37 @@ void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<in
     CV_Assert(maxLines >= 0);
     const auto stronger = [&](int a, int b) { return keys[a] > keys[b] || (keys[a] == keys[b] && a < b); };
     const size_t kept = maxLines > 0 ? std::min(order.size(), (size_t)maxLines) : order.size();
-    // A budget needs only its first lines in order.
-    std::partial_sort(order.begin(), order.begin() + kept, order.end(), stronger);
+    // A budget needs only its first lines in order; all of them, an introsort rather than the heap
+    // sort partial_sort would make of it. Both give the one order: no two lines are equivalent.
+    if (kept < order.size())
+        std::partial_sort(order.begin(), order.begin() + kept, order.end(), stronger);
+    else
+        std::sort(order.begin(), order.end(), stronger);
     order.resize(kept);
 }
 
 void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, double minLength, int maxLines,
-                          std::vector<Vec4f>& selected, std::vector<float>& responses, std::vector<int>& keptFrom)
+                          KnownResponses& known, std::vector<Vec4f>& selected, std::vector<float>& responses,
+                          std::vector<int>& keptFrom)
 {
-    keepLongOrStrong(lines, std::vector<float>(), minLength, 0.0, longEnough, &longFrom);
+    // Every line is at least 0 long: without a minimum, the lines themselves, no length computed.
+    const bool everyLine = minLength <= 0;
+    if (!everyLine)
+    {
+        keepLongOrStrong(lines, std::vector<float>(), minLength, 0.0, longEnough, &longFrom);
+        known.followKept(lines, longEnough, longFrom);
+    }
+    const std::vector<Vec4f>& candidates = everyLine ? lines : longEnough;
     // The responses of the lines that passed the minimum length only: with an image they are the
     // order, and the caller's (getLastResponses, KeyLine::response).
-    if (gray)
-        lineResponses(*gray, longEnough, keys);
-    else
+    if (!gray)
     {
-        keys.resize(longEnough.size());
-        for (size_t i = 0; i < longEnough.size(); i++)
-            keys[i] = (float)segmentLength(longEnough[i]);
+        lengths.resize(candidates.size());
+        for (size_t i = 0; i < candidates.size(); i++)
+            lengths[i] = (float)segmentLength(candidates[i]);
     }
-    order.resize(longEnough.size());
+    const std::vector<float>& keys = gray ? known.complete(*gray, candidates) : lengths;
+    order.resize(candidates.size());
     for (size_t i = 0; i < order.size(); i++)
         order[i] = (int)i;
     strongestFirst(keys, maxLines, order);
@@ -51,8 +62,8 @@ void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, doub
     responses.resize(gray ? order.size() : 0);
     for (size_t j = 0; j < order.size(); j++)
     {
-        selected[j] = longEnough[order[j]];
-        keptFrom[j] = longFrom[order[j]];
+        selected[j] = candidates[order[j]];
+        keptFrom[j] = everyLine ? order[j] : longFrom[order[j]];
         if (gray)
             responses[j] = keys[order[j]];
     }

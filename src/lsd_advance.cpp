@@ -161,29 +161,31 @@ private:
         stats.baseSegments = (int)frame.base.size();
         stats.baseMs = baseMs;
         frame.provenance.start(frame.base.size());
+        frame.knownResponses.clear();
         const int64 t = getTickCount();
-        frame.lengthFilter.measure(frame.base, gray, lsda::LengthFilterParams(parameters.own));
+        frame.lengthFilter.measure(frame.base, gray, lsda::LengthFilterParams(parameters.own), frame.knownResponses);
         stats.filterMs = elapsedMs(t);
 
         const bool filterFirst = parameters.own.stageOrder == FILTER_THEN_MERGE;
         if (filterFirst)
-            filterStage(frame.base, true, gray, frame.filtered, stats);
+            filterStage(frame.base, gray, frame.filtered, stats);
         mergeStage(filterFirst ? frame.filtered : frame.base, mask, frame.merged, stats);
         if (!filterFirst)
-            filterStage(frame.merged, !frame.grouped, gray, frame.filtered, stats);
+            filterStage(frame.merged, gray, frame.filtered, stats);
         const std::vector<Vec4f>& last = filterFirst ? frame.merged : frame.filtered;
 
         if (!imageSize.empty())
         {
             lsda::clipToImage(last, imageSize, frame.clipped, frame.keptFrom);
             frame.provenance.followKept(frame.keptFrom, last.size());
+            frame.knownResponses.followKept(last, frame.clipped, frame.keptFrom);
         }
         const std::vector<Vec4f>& unselected = imageSize.empty() ? last : frame.clipped;
 
         const int64 s = getTickCount();
         const lsda::SelectionParams selection(parameters.own);
         frame.selection.apply(unselected, gray, lsda::selectionMinLength(selection, imageSize), selection.maxLines,
-                              frame.selected, frame.responses, frame.keptFrom);
+                              frame.knownResponses, frame.selected, frame.responses, frame.keptFrom);
         frame.provenance.followKept(frame.keptFrom, unselected.size());
         stats.selectionMs = elapsedMs(s);
         stats.outputSegments = (int)frame.selected.size();
@@ -194,13 +196,12 @@ private:
         lastStats = stats;
     }
 
-    // inIsBase: in holds the base segments (with their responses).
-    void filterStage(const std::vector<Vec4f>& in, bool inIsBase, const Mat* gray, std::vector<Vec4f>& kept,
-                     LSDAdvanceStats& stats)
+    void filterStage(const std::vector<Vec4f>& in, const Mat* gray, std::vector<Vec4f>& kept, LSDAdvanceStats& stats)
     {
         const int64 t = getTickCount();
-        frame.lengthFilter.apply(in, inIsBase, gray, history, kept, frame.keptFrom, stats);
+        frame.lengthFilter.apply(in, gray, history, frame.knownResponses, kept, frame.keptFrom, stats);
         frame.provenance.followKept(frame.keptFrom, in.size());
+        frame.knownResponses.followKept(in, kept, frame.keptFrom);
         stats.filterMs += elapsedMs(t);
     }
 
@@ -221,6 +222,7 @@ private:
         t = getTickCount();
         lsda::mergeGroups(in, frame.groups, merging, merged, frame.mergedInto, frame.merging, mask);
         frame.provenance.followMerged(frame.mergedInto);
+        frame.knownResponses.followMerged(in, merged, frame.mergedInto);
         stats.mergedSegments = (int)merged.size();
         stats.mergingMs = elapsedMs(t);
     }
@@ -239,6 +241,7 @@ private:
         lsda::SegmentGroups groups;
         std::vector<int> keptFrom, mergedInto;
         lsda::SegmentProvenance provenance;
+        lsda::KnownResponses knownResponses;
         lsda::LengthFilter lengthFilter;
         lsda::GroupingWorkspace grouping;
         lsda::MergeWorkspace merging;

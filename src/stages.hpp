@@ -105,6 +105,27 @@ CV_EXPORTS void orientBrighterLeft(const Mat& gray, std::vector<Vec4f>& segments
 CV_EXPORTS void lineResponses(const Mat& gray, const std::vector<Vec4f>& segments,
                               std::vector<float>& responses);
 
+//! The responses (lineResponses()) known so far for the segments of the current stage of a call,
+//! followed through the stages: a segment a stage hands on unchanged, bit for bit, keeps its
+//! response, so that no segment is sampled twice in a call.
+class KnownResponses
+{
+public:
+    //! None known (a new call).
+    void clear();
+    //! After a stage that made each out[j] of in[keptFrom[j]] (kept, or clipped; -1: of none).
+    void followKept(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out, const std::vector<int>& keptFrom);
+    //! After a stage that made each in[i] part of out[mergedInto[i]].
+    void followMerged(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out, const std::vector<int>& mergedInto);
+    //! The responses of segments, the current stage's, on gray: those not known yet are computed.
+    const std::vector<float>& complete(const Mat& gray, const std::vector<Vec4f>& segments);
+
+private:
+    std::vector<float> known;  //!< one per segment of the current stage, -1 when not known; empty: none
+    std::vector<float> carried;
+    std::vector<int> pieceOf;
+};
+
 //--- stage 1: adaptive length suppression (length_filter.cpp)
 
 //! The rows of LSDAdvance::Params that stage 1 reads.
@@ -170,21 +191,22 @@ class LengthFilter
 {
 public:
     //! The thresholds at alpha = 1 from the base segments: the rule on their lengths, times
-    //! lengthThresholdScale, and with keepStrongSegments and an image, the same on their responses.
-    //! Without an image (processSegments) it keeps long segments only.
-    void measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& params);
-    //! Keeps the long (or strong) segments of in, the base segments given to measure() when inIsBase
-    //! or else merging's output from them, with the alpha of this frame of the sequence history;
-    //! keptFrom gets the index in `in` of each kept one. Fills stats' alpha, minLength, minResponse
-    //! and filteredSegments.
-    void apply(const std::vector<Vec4f>& in, bool inIsBase, const Mat* gray, const KeptCounts& history,
+    //! lengthThresholdScale, and with keepStrongSegments and an image, the same on their responses
+    //! (computed into `known`, which follows the base segments). Without an image (processSegments)
+    //! it keeps long segments only.
+    void measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& params,
+                 KnownResponses& known);
+    //! Keeps the long (or strong) segments of in, the base segments given to measure() or merging's
+    //! output from them, with the alpha of this frame of the sequence history; the responses of in
+    //! that `known` (which follows in) lacks are computed into it. keptFrom gets the index in `in` of
+    //! each kept one. Fills stats' alpha, minLength, minResponse and filteredSegments.
+    void apply(const std::vector<Vec4f>& in, const Mat* gray, const KeptCounts& history, KnownResponses& known,
                std::vector<Vec4f>& kept, std::vector<int>& keptFrom, LSDAdvanceStats& stats);
 
 private:
     LengthFilterParams params;
     bool strong = false;  //!< short segments of high response are kept
     double unitMinLength = 0, unitMinResponse = 0;
-    std::vector<float> baseResponses, mergedResponses;
 };
 
 //--- stage 2: angle + endpoint grouping (segment_grouping.cpp)
@@ -352,19 +374,21 @@ CV_EXPORTS double selectionMinLength(const SelectionParams& params, Size imageSi
 CV_EXPORTS void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<int>& order);
 
 //! The selection of one call: lines shorter than minLength are dropped; the others are ordered
-//! by decreasing response (their responses on gray, when given) or else by decreasing length,
-//! and the first params.maxLines (0: all) are kept. keptFrom gets the index in lines of each kept
-//! one, in output order; responses, with gray, their responses (else it is emptied).
+//! by decreasing response (their responses on gray, when given: those `known`, which follows
+//! lines, lacks are computed) or else by decreasing length, and the first maxLines (0: all) are
+//! kept. keptFrom gets the index in lines of each kept one, in output order; responses, with
+//! gray, their responses (else it is emptied).
 class LineSelection
 {
 public:
     void apply(const std::vector<Vec4f>& lines, const Mat* gray, double minLength, int maxLines,
-               std::vector<Vec4f>& selected, std::vector<float>& responses, std::vector<int>& keptFrom);
+               KnownResponses& known, std::vector<Vec4f>& selected, std::vector<float>& responses,
+               std::vector<int>& keptFrom);
 
 private:
     std::vector<Vec4f> longEnough;
     std::vector<int> longFrom;
-    std::vector<float> keys;
+    std::vector<float> lengths;
     std::vector<int> order;
 };
 

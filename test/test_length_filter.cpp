@@ -191,6 +191,25 @@ TEST(LSDAdvance_LengthFilter, keeps_long_or_strong_segments_in_order_and_the_res
     EXPECT_EQ(0.0, lsda::adaptiveMinResponse(std::vector<float>(), 1.0, LSDAdvance::LENGTH_THRESHOLD_CAPPED));
 }
 
+TEST(LSDAdvance_LengthFilter, decides_as_segmentLength_does_at_an_ulp_from_the_threshold)
+{
+    // Most segments are decided from their squared length; at their length, and an ulp or a hair
+    // either side of it, the decision is still segmentLength() >= minLength.
+    RNG rng(5);
+    for (int k = 0; k < 2000; k++)
+    {
+        const std::vector<Vec4f> segment = { Vec4f(rng.uniform(-50.f, 700.f), rng.uniform(-50.f, 500.f),
+                                                   rng.uniform(-50.f, 700.f), rng.uniform(-50.f, 500.f)) };
+        const double length = lsda::segmentLength(segment[0]);
+        for (const double minLength : { length, std::nextafter(length, 0.0), std::nextafter(length, 1e9),
+                                        length * (1 - 1e-12), length * (1 + 1e-12) })
+        {
+            SCOPED_TRACE(cv::format("segment %d, length %.17g, minLength %.17g", k, length, minLength));
+            EXPECT_EQ(length >= minLength ? 1 : 0, lsda::countLongOrStrong(segment, std::vector<float>(), minLength, 0.0));
+        }
+    }
+}
+
 TEST(LSDAdvance_LengthFilter, without_responses_counts_segments_not_shorter_than_the_length)
 {
     EXPECT_EQ(3, lsda::countLongOrStrong(segmentsOfLengths({ 5, 12, 12.5, 40 }), std::vector<float>(), 12.0, 0.0));

@@ -187,6 +187,18 @@ TEST(LSDAdvance_StageOutputs, the_last_stage_output_is_detect_lines)
     });
 }
 
+TEST(LSDAdvance_StageOutputs, responses_are_those_of_detect_lines)
+{
+    // With strong segments, a response computed by stage 1 goes on with its segment while no stage
+    // changes it; a fused or clipped segment is sampled again. Either way, each line's own.
+    forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat& frame, const std::vector<Vec4f>& lines) {
+        std::vector<float> responses, expected;
+        d.getLastResponses(responses);
+        lsda::lineResponses(frame, lines, expected);
+        EXPECT_EQ(expected, responses);
+    });
+}
+
 TEST(LSDAdvance_StageOutputs, counts_match_getLastStats)
 {
     forEachFrameOfBothOrders([](const LSDAdvance& d, const Mat&, const std::vector<Vec4f>& lines) {
