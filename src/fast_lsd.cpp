@@ -309,6 +309,9 @@ public:
     //! While a tile grows: the buffer indices from which a pixel is in the tile's first row, from
     //! which below its last; the rows beyond belong to other tiles (no limit at the image's border).
     int firstRow = 0, firstRowEnd = 0, lastRow = INT_MAX;
+    //! Whether the current region has a pixel in the tile's first row next to a seam, in its last
+    //! (set by the growth of a tile's region, which tests every pixel's row anyway).
+    bool reachesSeamAbove = false, reachesSeamBelow = false;
 
     //! Validates the current region (regionIndex, regionVector, regionSize, regionSum), of at least
     //! minRegionSize pixels, and appends its segment when it is valid.
@@ -321,7 +324,8 @@ public:
 private:
     void growRegion(FastLsd& lsd, int seed, float cosUnit);
     template <bool acute, bool mayOutgrow, bool bounded> void growRegionFrom(FastLsd& lsd, int seed, float cosUnit);
-    bool releaseAtSeams(const FastLsd& lsd, Tile& tile);
+    //! Sets the current region aside (it reaches a seam of the tile) to be joined across the seam.
+    void releaseAtSeams(Tile& tile);
     void regionToRect(const FastLsd& lsd, double prec, double p, Rect& rect);
     //! Appends the segment of rect once refined, when it is valid.
     void emitRect(const FastLsd& lsd, Rect& rect);
@@ -898,10 +902,11 @@ void FastLsd::Regions::detect(FastLsd& lsd, Tile* tile)
         if (!isFree(level[seed]))
             continue;
         growRegion(lsd, seed, lsd.cosUnit);
-        // A region of n pixels lies within n - 1 rows of its seed: most are far from the seams.
-        const int64 reach = (int64)(regionSize - 1) * (stride + 1);
-        if (tile && (seed - reach < firstRowEnd || seed + reach >= lastRow) && releaseAtSeams(lsd, *tile))
+        if (tile && (reachesSeamAbove || reachesSeamBelow))
+        {
+            releaseAtSeams(*tile);
             continue;
+        }
         if (regionSize >= lsd.minRegionSize)
             emitRegion(lsd);
     }
@@ -937,24 +942,15 @@ void FastLsd::Regions::emitRect(const FastLsd& lsd, Rect& rect)
     segments.push_back(s);
 }
 
-bool FastLsd::Regions::releaseAtSeams(const FastLsd& lsd, Tile& tile)
+void FastLsd::Regions::releaseAtSeams(Tile& tile)
 {
-    int lowest = regionIndex[0], highest = regionIndex[0];
-    for (int i = 1; i < regionSize; i++)
-    {
-        lowest = std::min(lowest, regionIndex[i]);
-        highest = std::max(highest, regionIndex[i]);
-    }
-    const bool above = lowest < firstRowEnd, below = highest >= lastRow;
-    if (!above && !below)
-        return false;
     const int region = (int)releasedSum.size();
     for (int i = 0; i < regionSize; i++)
     {
         const int q = regionIndex[i];
-        if (above && q < firstRowEnd)
+        if (q < firstRowEnd)
             tile.releasedAbove[q - firstRow - 1] = region;
-        if (below && q >= lastRow)
+        if (q >= lastRow)
             tile.releasedBelow[q - lastRow - 1] = region;
     }
     releasedIndex.insert(releasedIndex.end(), regionIndex.begin(), regionIndex.begin() + regionSize);
@@ -962,7 +958,6 @@ bool FastLsd::Regions::releaseAtSeams(const FastLsd& lsd, Tile& tile)
         releasedVector.insert(releasedVector.end(), regionVector.begin(), regionVector.begin() + regionSize);
     releasedStart.push_back((int)releasedIndex.size());
     releasedSum.push_back(regionSum);
-    return true;
 }
 
 template <bool acute, bool mayOutgrow, bool bounded>
@@ -1006,6 +1001,7 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
     // The 8 neighbours row by row, as the published algorithm visits them: the order decides which
     // pixels join, since the region's direction changes with every pixel.
     const int s = lsd.stride;
+    bool above = false, below = false;
     for (int i = 0; i < size; i++)
     {
         if (mayOutgrow && size + 8 > capacity)
@@ -1023,6 +1019,8 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
             visit(c - s);
             visit(c - s + 1);
         }
+        else
+            above = true;
         visit(c - 1);
         visit(c + 1);
         if (!bounded || c < lastRow)
@@ -1031,9 +1029,13 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
             visit(c + s);
             visit(c + s + 1);
         }
+        else
+            below = true;
     }
     regionSize = size;
     regionSum = Point2f(sx, sy);
+    reachesSeamAbove = above;
+    reachesSeamBelow = below;
 }
 
 float FastLsd::alignmentLimit(double tolerance)
