@@ -233,13 +233,22 @@ inline int tilesAlong(int rows, int tileHeight)
     return tileHeight == 0 ? 1 : std::max(1, (rows + tileHeight / 2) / tileHeight);
 }
 
+// Strides below this give the row of a buffer index exactly from (q + 0.5) / stride in double: the
+// quotient then lies at least 0.5 / stride (>= 2^-19) from an integer, and q < 2^31 keeps the
+// rounding error of the product below 2^-21.
+constexpr int kExactRowStride = 1 << 18;
+
 // Pixel (x, y) of buffer index q (row stride `stride`, one border row and column), by a
-// multiplication: the rounding of q / stride is corrected, so that no integer division is needed.
+// multiplication, with no integer division; the rounding of q / stride is corrected for the
+// strides that need it.
 inline Point pixelAt(int q, int stride, double invStride)
 {
-    int y = (int)(q * invStride);
-    y += (y + 1) * stride <= q;
-    y -= y * stride > q;
+    int y = (int)((q + 0.5) * invStride);
+    if (stride >= kExactRowStride)
+    {
+        y += (y + 1) * stride <= q;
+        y -= y * stride > q;
+    }
     return Point(q - y * stride - 1, y - 1);
 }
 
