@@ -355,6 +355,8 @@ struct FastLsd::Tile
     int y0 = 0, y1 = 0;
     bool seamAbove = false, seamBelow = false;
     std::vector<int> releasedAbove, releasedBelow;
+    //! The seeds of the rows next to a seam, first and last (FastLsd::seedSeamRows).
+    std::vector<int> seedsAbove, seedsBelow;
     Regions regions;
 };
 
@@ -536,6 +538,7 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments, const Mat& m
     cosUnit = alignmentLimit(tolerance);
     alignedDot = (int)std::floor((double)cosUnit * kUnit);
 
+    seedSeamRows();
     parallel_for_(Range(0, (int)tiles.size()), TileRegions(*this), (double)tiles.size());
     joinAcrossSeams();
     for (const Tile& t : tiles)
@@ -604,14 +607,14 @@ void FastLsd::orderTile(Tile& tile)
     r.keepsVectors = refine >= kLsdRefineStd;
     r.reserve(defined);
     // The seeds in raster order, in regionIndex until the regions need it (all of them free: the
-    // tile's regions have not grown yet). Every defined pixel of a row next to a seam seeds: a
-    // segment that crosses it from a stronger part in the other tile has its part here grown and
-    // joined; the neighbours across the seam are another tile's, which grows at the same time.
+    // tile's regions have not grown yet); those of the rows next to a seam were chosen before the
+    // tiles grew.
     int* next = r.regionIndex.data();
     for (int y = tile.y0; y < tile.y1; y++)
     {
-        const bool nextToSeam = (y == tile.y0 && tile.seamAbove) || (y == tile.y1 - 1 && tile.seamBelow);
-        next = nextToSeam ? seedsOfRow(y, FLT_MIN, false, next) : seedsOfRow(y, seedNorm, seedAlignedNeighbours > 0, next);
+        const std::vector<int>* seam = y == tile.y0 && tile.seamAbove ? &tile.seedsAbove
+                                       : y == tile.y1 - 1 && tile.seamBelow ? &tile.seedsBelow : nullptr;
+        next = seam ? std::copy(seam->begin(), seam->end(), next) : seedsOfRow(y, seedNorm, seedAlignedNeighbours > 0, next);
     }
     const int count = (int)(next - r.regionIndex.data());
     r.seeds.resize(count);
@@ -629,6 +632,40 @@ void FastLsd::orderTile(Tile& tile)
     }
     for (int i = 0; i < count; i++)
         r.seeds[counts[numBins - 1 - binOf(r.regionIndex[i])]++] = r.regionIndex[i];
+}
+
+void FastLsd::seedSeamRows()
+{
+    // A row next to a seam seeds at every gradient level: a segment that crosses the seam from a
+    // stronger part in the other tile has its part here grown and joined. With seeds on edges, only
+    // the pixels aligned with one of their three neighbours across the seam, as a segment crossing
+    // it is (not the texture along it). Chosen before the tiles grow: those neighbours are pixels
+    // that the other tile takes while this one grows.
+    const bool onEdges = seedAlignedNeighbours > 0;
+    for (Tile& t : tiles)
+    {
+        const auto seedsOf = [&](int y, int across, std::vector<int>& seeds) {
+            seeds.resize(width - 1 + kCompactionSlack);
+            int* const first = seeds.data();
+            int* next = seedsOfRow(y, FLT_MIN, false, first);
+            if (onEdges)
+                next = std::remove_if(first, next, [&](int q) {
+                    const Vec2s u = level[q];
+                    for (int o = q + across - 1; o <= q + across + 1; o++)
+                    {
+                        const Vec2s a = level[o];
+                        if (isFree(a) && u[0] * a[0] + u[1] * a[1] > alignedDot)
+                            return false;
+                    }
+                    return true;
+                });
+            seeds.resize(next - first);
+        };
+        if (t.seamAbove)
+            seedsOf(t.y0, -stride, t.seedsAbove);
+        if (t.seamBelow)
+            seedsOf(t.y1 - 1, stride, t.seedsBelow);
+    }
 }
 
 int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
