@@ -233,13 +233,22 @@ inline int tilesAlong(int rows, int tileHeight)
     return tileHeight == 0 ? 1 : std::max(1, (rows + tileHeight / 2) / tileHeight);
 }
 
+// Strides below this give the row of a buffer index exactly from (q + 0.5) / stride in double: the
+// quotient then lies at least 0.5 / stride (>= 2^-19) from an integer, and q < 2^31 keeps the
+// rounding error of the product below 2^-21.
+constexpr int kExactRowStride = 1 << 18;
+
 // Pixel (x, y) of buffer index q (row stride `stride`, one border row and column), by a
-// multiplication: the rounding of q / stride is corrected, so that no integer division is needed.
+// multiplication, with no integer division; the rounding of q / stride is corrected for the
+// strides that need it.
 inline Point pixelAt(int q, int stride, double invStride)
 {
-    int y = (int)(q * invStride);
-    y += (y + 1) * stride <= q;
-    y -= y * stride > q;
+    int y = (int)((q + 0.5) * invStride);
+    if (stride >= kExactRowStride)
+    {
+        y += (y + 1) * stride <= q;
+        y -= y * stride > q;
+    }
     return Point(q - y * stride - 1, y - 1);
 }
 
@@ -309,6 +318,9 @@ public:
     //! While a tile grows: the buffer indices from which a pixel is in the tile's first row, from
     //! which below its last; the rows beyond belong to other tiles (no limit at the image's border).
     int firstRow = 0, firstRowEnd = 0, lastRow = INT_MAX;
+    //! Whether the current region has a pixel in the tile's first row next to a seam, in its last
+    //! (set by the growth of a tile's region, which tests every pixel's row anyway).
+    bool reachesSeamAbove = false, reachesSeamBelow = false;
 
     //! Validates the current region (regionIndex, regionVector, regionSize, regionSum), of at least
     //! minRegionSize pixels, and appends its segment when it is valid.
@@ -321,7 +333,8 @@ public:
 private:
     void growRegion(FastLsd& lsd, int seed, float cosUnit);
     template <bool acute, bool mayOutgrow, bool bounded> void growRegionFrom(FastLsd& lsd, int seed, float cosUnit);
-    bool releaseAtSeams(const FastLsd& lsd, Tile& tile);
+    //! Sets the current region aside (it reaches a seam of the tile) to be joined across the seam.
+    void releaseAtSeams(Tile& tile);
     void regionToRect(const FastLsd& lsd, double prec, double p, Rect& rect);
     //! Appends the segment of rect once refined, when it is valid.
     void emitRect(const FastLsd& lsd, Rect& rect);
@@ -342,6 +355,8 @@ struct FastLsd::Tile
     int y0 = 0, y1 = 0;
     bool seamAbove = false, seamBelow = false;
     std::vector<int> releasedAbove, releasedBelow;
+    //! The seeds of the rows next to a seam, first and last (FastLsd::seedSeamRows).
+    std::vector<int> seedsAbove, seedsBelow;
     Regions regions;
 };
 
@@ -523,6 +538,7 @@ void FastLsd::detect(const Mat& gray, std::vector<Vec4f>& segments, const Mat& m
     cosUnit = alignmentLimit(tolerance);
     alignedDot = (int)std::floor((double)cosUnit * kUnit);
 
+    seedSeamRows();
     parallel_for_(Range(0, (int)tiles.size()), TileRegions(*this), (double)tiles.size());
     joinAcrossSeams();
     for (const Tile& t : tiles)
@@ -591,14 +607,14 @@ void FastLsd::orderTile(Tile& tile)
     r.keepsVectors = refine >= kLsdRefineStd;
     r.reserve(defined);
     // The seeds in raster order, in regionIndex until the regions need it (all of them free: the
-    // tile's regions have not grown yet). Every defined pixel of a row next to a seam seeds: a
-    // segment that crosses it from a stronger part in the other tile has its part here grown and
-    // joined; the neighbours across the seam are another tile's, which grows at the same time.
+    // tile's regions have not grown yet); those of the rows next to a seam were chosen before the
+    // tiles grew.
     int* next = r.regionIndex.data();
     for (int y = tile.y0; y < tile.y1; y++)
     {
-        const bool nextToSeam = (y == tile.y0 && tile.seamAbove) || (y == tile.y1 - 1 && tile.seamBelow);
-        next = nextToSeam ? seedsOfRow(y, FLT_MIN, false, next) : seedsOfRow(y, seedNorm, seedAlignedNeighbours > 0, next);
+        const std::vector<int>* seam = y == tile.y0 && tile.seamAbove ? &tile.seedsAbove
+                                       : y == tile.y1 - 1 && tile.seamBelow ? &tile.seedsBelow : nullptr;
+        next = seam ? std::copy(seam->begin(), seam->end(), next) : seedsOfRow(y, seedNorm, seedAlignedNeighbours > 0, next);
     }
     const int count = (int)(next - r.regionIndex.data());
     r.seeds.resize(count);
@@ -616,6 +632,40 @@ void FastLsd::orderTile(Tile& tile)
     }
     for (int i = 0; i < count; i++)
         r.seeds[counts[numBins - 1 - binOf(r.regionIndex[i])]++] = r.regionIndex[i];
+}
+
+void FastLsd::seedSeamRows()
+{
+    // A row next to a seam seeds at every gradient level: a segment that crosses the seam from a
+    // stronger part in the other tile has its part here grown and joined. With seeds on edges, only
+    // the pixels aligned with one of their three neighbours across the seam, as a segment crossing
+    // it is (not the texture along it). Chosen before the tiles grow: those neighbours are pixels
+    // that the other tile takes while this one grows.
+    const bool onEdges = seedAlignedNeighbours > 0;
+    for (Tile& t : tiles)
+    {
+        const auto seedsOf = [&](int y, int across, std::vector<int>& seeds) {
+            seeds.resize(width - 1 + kCompactionSlack);
+            int* const first = seeds.data();
+            int* next = seedsOfRow(y, FLT_MIN, false, first);
+            if (onEdges)
+                next = std::remove_if(first, next, [&](int q) {
+                    const Vec2s u = level[q];
+                    for (int o = q + across - 1; o <= q + across + 1; o++)
+                    {
+                        const Vec2s a = level[o];
+                        if (isFree(a) && u[0] * a[0] + u[1] * a[1] > alignedDot)
+                            return false;
+                    }
+                    return true;
+                });
+            seeds.resize(next - first);
+        };
+        if (t.seamAbove)
+            seedsOf(t.y0, -stride, t.seedsAbove);
+        if (t.seamBelow)
+            seedsOf(t.y1 - 1, stride, t.seedsBelow);
+    }
 }
 
 int* FastLsd::seedsOfRow(int y, float least, bool onEdges, int* next) const
@@ -898,10 +948,11 @@ void FastLsd::Regions::detect(FastLsd& lsd, Tile* tile)
         if (!isFree(level[seed]))
             continue;
         growRegion(lsd, seed, lsd.cosUnit);
-        // A region of n pixels lies within n - 1 rows of its seed: most are far from the seams.
-        const int64 reach = (int64)(regionSize - 1) * (stride + 1);
-        if (tile && (seed - reach < firstRowEnd || seed + reach >= lastRow) && releaseAtSeams(lsd, *tile))
+        if (tile && (reachesSeamAbove || reachesSeamBelow))
+        {
+            releaseAtSeams(*tile);
             continue;
+        }
         if (regionSize >= lsd.minRegionSize)
             emitRegion(lsd);
     }
@@ -937,24 +988,15 @@ void FastLsd::Regions::emitRect(const FastLsd& lsd, Rect& rect)
     segments.push_back(s);
 }
 
-bool FastLsd::Regions::releaseAtSeams(const FastLsd& lsd, Tile& tile)
+void FastLsd::Regions::releaseAtSeams(Tile& tile)
 {
-    int lowest = regionIndex[0], highest = regionIndex[0];
-    for (int i = 1; i < regionSize; i++)
-    {
-        lowest = std::min(lowest, regionIndex[i]);
-        highest = std::max(highest, regionIndex[i]);
-    }
-    const bool above = lowest < firstRowEnd, below = highest >= lastRow;
-    if (!above && !below)
-        return false;
     const int region = (int)releasedSum.size();
     for (int i = 0; i < regionSize; i++)
     {
         const int q = regionIndex[i];
-        if (above && q < firstRowEnd)
+        if (q < firstRowEnd)
             tile.releasedAbove[q - firstRow - 1] = region;
-        if (below && q >= lastRow)
+        if (q >= lastRow)
             tile.releasedBelow[q - lastRow - 1] = region;
     }
     releasedIndex.insert(releasedIndex.end(), regionIndex.begin(), regionIndex.begin() + regionSize);
@@ -962,7 +1004,6 @@ bool FastLsd::Regions::releaseAtSeams(const FastLsd& lsd, Tile& tile)
         releasedVector.insert(releasedVector.end(), regionVector.begin(), regionVector.begin() + regionSize);
     releasedStart.push_back((int)releasedIndex.size());
     releasedSum.push_back(regionSum);
-    return true;
 }
 
 template <bool acute, bool mayOutgrow, bool bounded>
@@ -1006,6 +1047,7 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
     // The 8 neighbours row by row, as the published algorithm visits them: the order decides which
     // pixels join, since the region's direction changes with every pixel.
     const int s = lsd.stride;
+    bool above = false, below = false;
     for (int i = 0; i < size; i++)
     {
         if (mayOutgrow && size + 8 > capacity)
@@ -1023,6 +1065,8 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
             visit(c - s);
             visit(c - s + 1);
         }
+        else
+            above = true;
         visit(c - 1);
         visit(c + 1);
         if (!bounded || c < lastRow)
@@ -1031,9 +1075,13 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
             visit(c + s);
             visit(c + s + 1);
         }
+        else
+            below = true;
     }
     regionSize = size;
     regionSum = Point2f(sx, sy);
+    reachesSeamAbove = above;
+    reachesSeamBelow = below;
 }
 
 float FastLsd::alignmentLimit(double tolerance)

@@ -55,6 +55,8 @@ private:
     class JoinedRegions;
     void layTiles();
     void computeGradient(const Mat& image);
+    //! The seeds of the rows next to the seams, into their tiles.
+    void seedSeamRows();
     void orderTile(Tile& tile);
     void joinAcrossSeams();
     //! The released region k (in the frame's numbering): its tile's regions, and its index there.

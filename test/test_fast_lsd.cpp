@@ -519,6 +519,31 @@ TEST(LSDAdvance_FastLsd, segments_crossing_the_seams_come_out_whole)
     }
 }
 
+// With seeds above a gradient level and on edges, the part of a segment beyond a seam that is too
+// weak to seed still grows, from the row next to the seam, and is joined: the segment comes out
+// whole, as without tiles.
+TEST(LSDAdvance_FastLsd, weak_parts_beyond_a_seam_are_joined)
+{
+    // A slanted edge of contrast 60 down to image row 200, of contrast 16 below: the lower part's
+    // gradient is defined but below 2.5 rho, so that only the upper part seeds; tiles of 16 rows.
+    Mat img(401, 300, CV_8UC1, Scalar(100));
+    fillConvexPoly(img, std::vector<Point>{ Point(0, 0), Point(60, 0), Point(150, 200), Point(0, 200) }, Scalar(160), LINE_AA);
+    fillConvexPoly(img, std::vector<Point>{ Point(0, 200), Point(150, 200), Point(240, 400), Point(0, 400) }, Scalar(116), LINE_AA);
+    GaussianBlur(img, img, Size(5, 5), 1.0);
+    const LSDAdvance::LSDParams seeds = withOptions(exactLsdParams(LSD_REFINE_NONE, 1.0), 2.5, 0, 2);
+    const std::vector<Vec4f> untiled = fastLsdSegments(seeds, img), tiled = fastLsdSegments(withOptions(seeds, 2.5, 16, 2), img);
+    const auto longest = [](const std::vector<Vec4f>& segments) {
+        return *std::max_element(segments.begin(), segments.end(), [](const Vec4f& a, const Vec4f& b) {
+            return std::hypot(a[2] - a[0], a[3] - a[1]) < std::hypot(b[2] - b[0], b[3] - b[1]);
+        });
+    };
+    const Vec4f expected = longest(untiled), actual = longest(tiled);
+    // The whole edge, from the top of the image to its bottom.
+    EXPECT_GT(std::abs(expected[3] - expected[1]), 390);
+    for (int k = 0; k < 4; k++)
+        EXPECT_NEAR(expected[k], actual[k], 1.0) << k;
+}
+
 // Regions grow inside their tile and are joined across the seams: the segments are nearly those of
 // the LSD algorithm (measured: 96 % of the segments reproduced both ways at 64 rows).
 TEST(LSDAdvance_FastLsd, tiles_reproduce_the_segments_without_tiles)
