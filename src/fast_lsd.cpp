@@ -332,7 +332,9 @@ public:
 
 private:
     void growRegion(FastLsd& lsd, int seed, float cosUnit);
-    template <bool acute, bool mayOutgrow, bool bounded> void growRegionFrom(FastLsd& lsd, int seed, float cosUnit);
+    template <bool perNeighbourhood> void growRegionAs(FastLsd& lsd, int seed, float cosUnit);
+    template <bool acute, bool mayOutgrow, bool bounded, bool perNeighbourhood>
+    void growRegionFrom(FastLsd& lsd, int seed, float cosUnit);
     //! Sets the current region aside (it reaches a seam of the tile) to be joined across the seam.
     void releaseAtSeams(Tile& tile);
     void regionToRect(const FastLsd& lsd, double prec, double p, Rect& rect);
@@ -385,7 +387,7 @@ FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
     : refine(p.refine), scale(p.scale), sigmaScale(p.sigmaScale), quant(p.quant),
       angleTolerance(p.angleTolerance), logEps(p.logEps), densityThreshold(p.densityThreshold),
       seedGradientRatio(p.seedGradientRatio), numBins(p.numBins), seedAlignedNeighbours(p.seedAlignedNeighbours),
-      tileHeight(p.tileHeight), fullScaleSmoothing(p.fullScaleSigma), acrossSeams(makePtr<Regions>())
+      tileHeight(p.tileHeight), regionGrowth(p.regionGrowth), fullScaleSmoothing(p.fullScaleSigma), acrossSeams(makePtr<Regions>())
 {
     // The parameters are in their ranges: those of the table of parameters.hpp, which every setter checks.
     acrossSeams->fitsAnyRegion = false;
@@ -572,10 +574,11 @@ void FastLsd::computeGradient(const Mat& image)
     threshold = bound >= (double)INT_MAX ? INT_MAX : (int)bound;
 
     // Every pixel of level is written below: the rows' gradients, the border and the pixels without
-    // a gradient (last row and column) as (0, 0).
-    level.resize(total);
+    // a gradient (last row and column) as (0, 0); and one more (0, 0) past the last row, which the
+    // test of four neighbours at a time reads (GROWTH_PER_NEIGHBOURHOOD).
+    level.resize(total + 1);
     std::fill(level.begin(), level.begin() + stride, Vec2s(0, 0));
-    std::fill(level.end() - stride, level.end(), Vec2s(0, 0));
+    std::fill(level.end() - stride - 1, level.end(), Vec2s(0, 0));
     gradNorm.resize(total);
     rowMaxNorm2.assign(height - 1, 0);
     rowDefined.assign(height - 1, 0);
@@ -1006,7 +1009,7 @@ void FastLsd::Regions::releaseAtSeams(Tile& tile)
     releasedSum.push_back(regionSum);
 }
 
-template <bool acute, bool mayOutgrow, bool bounded>
+template <bool acute, bool mayOutgrow, bool bounded, bool perNeighbourhood>
 void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
 {
     // A pixel joins when its unit level-line vector u is within the tolerance of the region's
@@ -1029,24 +1032,50 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
         kept[0] = u[seed];
     u[seed] = Vec2s(0, 0);
     int size = 1;
-    auto visit = [&](int q) {
+    const auto join = [&](int q) {
         const Vec2s v = u[q];
-        const float d = sx * v[0] + sy * v[1];
-        // No branch until the outcome: whether a neighbour is free is as good as random.
-        const bool joins = acute ? d > limit : (isFree(v) & (d >= limit));
-        if (!joins)
-            return;
         if (keeping)
             kept[size] = v;
         region[size++] = q;
         u[q] = Vec2s(0, 0);
         sx += v[0];
         sy += v[1];
+    };
+    const auto visit = [&](int q) {
+        const Vec2s v = u[q];
+        const float d = sx * v[0] + sy * v[1];
+        // No branch until the outcome: whether a neighbour is free is as good as random.
+        const bool joins = acute ? d > limit : (isFree(v) & (d >= limit));
+        if (!joins)
+            return;
+        join(q);
         limit = cosUnit * std::sqrt(sx * sx + sy * sy);
     };
-    // The 8 neighbours row by row, as the published algorithm visits them: the order decides which
-    // pixels join, since the region's direction changes with every pixel.
+#if CV_SIMD128
+    v_float32x4 dirX = v_setall_f32(sx), dirY = v_setall_f32(sy), least = v_setall_f32(limit);
+#endif
+    // GROWTH_PER_NEIGHBOURHOOD: which of the four pixels from q on pass the test of visit(), a bit
+    // each, with the same float operations (the vectors one 32-bit lane each).
+    const auto aligned4 = [&](int q) -> unsigned {
+#if CV_SIMD128
+        const v_int32x4 w = v_reinterpret_as_s32(v_load((const short*)(u + q)));
+        const v_float32x4 d = v_cvt_f32(v_shr<16>(v_shl<16>(w))) * dirX + v_cvt_f32(v_shr<16>(w)) * dirY;
+        return (unsigned)v_signmask(acute ? d > least : (d >= least) & v_reinterpret_as_f32(w != v_setzero_s32()));
+#else
+        unsigned lanes = 0;
+        for (int k = 0; k < 4; k++)
+        {
+            const Vec2s v = u[q + k];
+            const float d = sx * v[0] + sy * v[1];
+            lanes |= (unsigned)(acute ? d > limit : (isFree(v) && d >= limit)) << k;
+        }
+        return lanes;
+#endif
+    };
+    // The 8 neighbours row by row, as the published algorithm visits them: per pixel, the order
+    // decides which pixels join, since the region's direction changes with every pixel.
     const int s = lsd.stride;
+    const int neighbours[8] = { -s - 1, -s, -s + 1, -1, 1, s - 1, s, s + 1 };
     bool above = false, below = false;
     for (int i = 0; i < size; i++)
     {
@@ -1059,24 +1088,49 @@ void FastLsd::Regions::growRegionFrom(FastLsd& lsd, int seed, float cosUnit)
         }
         const int c = region[i];
         // In a tile, the neighbours in the rows of the tiles above and below are not its own.
-        if (!bounded || c >= firstRowEnd)
+        const bool visitsAbove = !bounded || c >= firstRowEnd, visitsBelow = !bounded || c < lastRow;
+        above |= !visitsAbove;
+        below |= !visitsBelow;
+        if (perNeighbourhood)
+        {
+            // The neighbours that pass against the direction before any of them joined, in the
+            // order of neighbours[]: one test of the 3 (4) pixels of each row, one branch when none
+            // joins (most neighbours are taken, undefined or of another direction).
+            const unsigned middle = aligned4(c - 1);
+            unsigned joining = ((middle & 1u) << 3) | ((middle & 4u) << 2);
+            if (visitsAbove)
+                joining |= aligned4(c - s - 1) & 7u;
+            if (visitsBelow)
+                joining |= (aligned4(c + s - 1) & 7u) << 5;
+            if (!joining)
+                continue;
+            do
+            {
+                join(c + neighbours[trailingZeros32(joining)]);
+                joining &= joining - 1;
+            } while (joining);
+            limit = cosUnit * std::sqrt(sx * sx + sy * sy);
+#if CV_SIMD128
+            dirX = v_setall_f32(sx);
+            dirY = v_setall_f32(sy);
+            least = v_setall_f32(limit);
+#endif
+            continue;
+        }
+        if (visitsAbove)
         {
             visit(c - s - 1);
             visit(c - s);
             visit(c - s + 1);
         }
-        else
-            above = true;
         visit(c - 1);
         visit(c + 1);
-        if (!bounded || c < lastRow)
+        if (visitsBelow)
         {
             visit(c + s - 1);
             visit(c + s);
             visit(c + s + 1);
         }
-        else
-            below = true;
     }
     regionSize = size;
     regionSum = Point2f(sx, sy);
@@ -1089,24 +1143,33 @@ float FastLsd::alignmentLimit(double tolerance)
     return (float)std::cos(tolerance) * kUnit;
 }
 
-void FastLsd::Regions::growRegion(FastLsd& lsd, int seed, float cosUnit)
+template <bool perNeighbourhood>
+void FastLsd::Regions::growRegionAs(FastLsd& lsd, int seed, float cosUnit)
 {
     const bool bounded = firstRowEnd > 0 || lastRow < INT_MAX;
     if (cosUnit > 0)
     {
         if (!fitsAnyRegion)
-            growRegionFrom<true, true, false>(lsd, seed, cosUnit);
+            growRegionFrom<true, true, false, perNeighbourhood>(lsd, seed, cosUnit);
         else if (bounded)
-            growRegionFrom<true, false, true>(lsd, seed, cosUnit);
+            growRegionFrom<true, false, true, perNeighbourhood>(lsd, seed, cosUnit);
         else
-            growRegionFrom<true, false, false>(lsd, seed, cosUnit);
+            growRegionFrom<true, false, false, perNeighbourhood>(lsd, seed, cosUnit);
     }
     else if (!fitsAnyRegion)
-        growRegionFrom<false, true, false>(lsd, seed, cosUnit);
+        growRegionFrom<false, true, false, perNeighbourhood>(lsd, seed, cosUnit);
     else if (bounded)
-        growRegionFrom<false, false, true>(lsd, seed, cosUnit);
+        growRegionFrom<false, false, true, perNeighbourhood>(lsd, seed, cosUnit);
     else
-        growRegionFrom<false, false, false>(lsd, seed, cosUnit);
+        growRegionFrom<false, false, false, perNeighbourhood>(lsd, seed, cosUnit);
+}
+
+void FastLsd::Regions::growRegion(FastLsd& lsd, int seed, float cosUnit)
+{
+    if (lsd.regionGrowth == LSDAdvance::GROWTH_PER_NEIGHBOURHOOD)
+        growRegionAs<true>(lsd, seed, cosUnit);
+    else
+        growRegionAs<false>(lsd, seed, cosUnit);
 }
 
 void FastLsd::Regions::regionToRect(const FastLsd& lsd, double prec, double p, Rect& rect)

@@ -81,7 +81,7 @@ private:
     // Parameters (LSD's and ours), resolved to what the loops use.
     int refine;
     double scale, sigmaScale, quant, angleTolerance, logEps, densityThreshold, seedGradientRatio;
-    int numBins, seedAlignedNeighbours, tileHeight;
+    int numBins, seedAlignedNeighbours, tileHeight, regionGrowth;
 
     // Per-frame state, sized for the largest frame seen (row stride = width + 1; one border row
     // and column of "undefined" pixels above and left, so that the 8 neighbours of any pixel with

@@ -63,7 +63,8 @@
     X(int, numBins, 1024, Range::real(1, CLOSED, 65536, CLOSED), "lsdNumBins")                                     \
     X(double, seedGradientRatio, 2.5, Range::real(1, CLOSED, 100, CLOSED), nullptr)                                 \
     X(int, seedAlignedNeighbours, 2, Range::real(0, CLOSED, 2, CLOSED), nullptr)                                   \
-    X(int, tileHeight, 64, Range::real(16, CLOSED, 100000, CLOSED, " px").orValue(0, "no tiles"), nullptr)
+    X(int, tileHeight, 64, Range::real(16, CLOSED, 100000, CLOSED, " px").orValue(0, "no tiles"), nullptr)        \
+    X(int, regionGrowth, LSDAdvance::GROWTH_PER_NEIGHBOURHOOD, Range::enumOf(kRegionGrowths), nullptr)
 
 // LSDAdvance::FLDParams: X(type, field, default, range, key in files of version 4.6.0)
 #define LSDA_FLD_PARAMS(X)                                                                                         \
@@ -106,6 +107,7 @@ const char* const kStageOrders[] = { "FILTER_THEN_MERGE", "MERGE_THEN_FILTER" };
 const char* const kAngleBinnings[] = { "ANGLE_BINS_STRICT", "ANGLE_BINS_NEIGHBOURS" };
 const char* const kMergeStrategies[] = { "MERGE_NONE", "MERGE_BASELINES", "MERGE_LONGEST_FIRST" };
 const char* const kLsdRefinements[] = { "LSD_REFINE_NONE", "LSD_REFINE_STD", "LSD_REFINE_ADV" };
+const char* const kRegionGrowths[] = { "GROWTH_PER_PIXEL", "GROWTH_PER_NEIGHBOURHOOD" };
 const char* const kGradientOperators[] = { "PREWITT", "SOBEL", "SCHARR", "LSD" };
 const int kApertureSizes[] = { 3, 5, 7 };
 const char* const kPresets[] = { "PRESET_MOST_ACCURATE", "PRESET_FASTEST", "PRESET_PAPER", "PRESET_SEQUENCE",
@@ -121,6 +123,7 @@ static_assert(LSDA_COUNT_OF(kStageOrders) == LSDAdvance::MERGE_THEN_FILTER + 1, 
 static_assert(LSDA_COUNT_OF(kAngleBinnings) == LSDAdvance::ANGLE_BINS_NEIGHBOURS + 1, "a name per LSDAdvance::AngleBinning");
 static_assert(LSDA_COUNT_OF(kMergeStrategies) == LSDAdvance::MERGE_LONGEST_FIRST + 1, "a name per LSDAdvance::MergeStrategy");
 static_assert(LSDA_COUNT_OF(kLsdRefinements) == kLsdRefineAdv + 1, "a name per cv::LineSegmentDetectorModes");
+static_assert(LSDA_COUNT_OF(kRegionGrowths) == LSDAdvance::GROWTH_PER_NEIGHBOURHOOD + 1, "a name per LSDAdvance::RegionGrowth");
 static_assert(LSDA_COUNT_OF(kPresets) == LSDAdvance::PRESET_FRONT_END + 1, "a name per LSDAdvance::Preset");
 static_assert(LSDA_COUNT_OF(kGradientOperators) == EdgeDrawing::LSD + 1, "a name per EdgeDrawing::GradientOperator");
 

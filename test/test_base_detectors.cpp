@@ -77,7 +77,7 @@ std::vector<Vec4f> piecesAlong(const std::vector<Vec4f>& lines, const Vec4f& sid
 bool onlyForFastLsd(const ParameterAccess& p)
 {
     return p.name == "LSDParams::seedGradientRatio" || p.name == "LSDParams::seedAlignedNeighbours" ||
-           p.name == "LSDParams::tileHeight";
+           p.name == "LSDParams::tileHeight" || p.name == "LSDParams::regionGrowth";
 }
 
 Ptr<LSDAdvance> onBase(int base, bool stages)
@@ -288,6 +288,7 @@ TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
         { "LSDParams::seedGradientRatio", 5.0, nullptr, 0 },
         { "LSDParams::seedAlignedNeighbours", 0, nullptr, 0 },
         { "LSDParams::tileHeight", 16, nullptr, 0 },
+        { "LSDParams::regionGrowth", LSDAdvance::GROWTH_PER_PIXEL, nullptr, 0 },
         { "FLDParams::lengthThreshold", 30, nullptr, 0 },
         { "FLDParams::distanceThreshold", 3.0, nullptr, 0 },
         { "FLDParams::cannyThreshold1", 150, nullptr, 0 },

@@ -38,7 +38,8 @@ inline std::vector<Vec4f> asSet(std::vector<Vec4f> lines)
 }
 
 //! The LSD algorithm itself in LSDParams: the image read as it is at scale 1, every pixel seeds a
-//! region, no tiles (what OpenCV's LSD does with the same refine and scale).
+//! region, no tiles, the direction updated after every pixel that joins (what OpenCV's LSD does
+//! with the same refine and scale).
 inline LSDAdvance::LSDParams exactLsdParams(int refine, double scale)
 {
     LSDAdvance::LSDParams p;
@@ -48,6 +49,7 @@ inline LSDAdvance::LSDParams exactLsdParams(int refine, double scale)
     p.seedGradientRatio = 1.0;
     p.seedAlignedNeighbours = 0;
     p.tileHeight = 0;
+    p.regionGrowth = LSDAdvance::GROWTH_PER_PIXEL;
     return p;
 }
 

@@ -175,6 +175,16 @@ public:
         ANGLE_BINS_NEIGHBOURS = 1 //!< also the two neighbouring bins, wrapping 180 deg to 0 (default)
     };
 
+    /** @brief How BASE_FAST_LSD grows a region (LSDParams::regionGrowth): when the region's direction,
+    against which a pixel's level-line angle is tested, takes in the pixels that have joined. */
+    enum RegionGrowth
+    {
+        GROWTH_PER_PIXEL = 0,        //!< after every pixel that joins, as the LSD algorithm
+        /** after the 8 neighbours of a pixel of the region have all been tested against the direction
+        before any of them joined, at once (default) */
+        GROWTH_PER_NEIGHBOURHOOD = 1
+    };
+
     /** @brief The detector of stage 0. Every base gives segments oriented brighter side on the
     left (EDLines' are turned round where needed). */
     enum BaseDetector
@@ -187,8 +197,8 @@ public:
         BASE_FLD = 1,     //!< cv::ximgproc::FastLineDetector with FLDParams
         BASE_EDLINES = 2, //!< EDLines of cv::ximgproc::EdgeDrawing with its EdgeDrawing::Params
         /** the LSD algorithm, the module's own implementation written for speed, with LSDParams: with
-        LSDParams::seedGradientRatio 1, LSDParams::seedAlignedNeighbours 0 and LSDParams::tileHeight 0
-        it gives BASE_LSD's segments, and with LSDParams::fullScaleSigma 0 too those of OpenCV's
+        LSDParams::seedGradientRatio 1, LSDParams::seedAlignedNeighbours 0, LSDParams::tileHeight 0 and
+        LSDParams::regionGrowth GROWTH_PER_PIXEL it gives BASE_LSD's segments, and with LSDParams::fullScaleSigma 0 too those of OpenCV's
         LineSegmentDetector (doc/performance.md). The default. */
         BASE_FAST_LSD = 3
     };
@@ -238,8 +248,8 @@ public:
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
     LineSegmentDetector) and BASE_FAST_LSD, with the meaning of cv::createLineSegmentDetector's arguments,
-    a pre-smoothing at scale 1 for both (fullScaleSigma), and three of BASE_FAST_LSD's own
-    (seedGradientRatio, seedAlignedNeighbours, tileHeight). */
+    a pre-smoothing at scale 1 for both (fullScaleSigma), and four of BASE_FAST_LSD's own
+    (seedGradientRatio, seedAlignedNeighbours, tileHeight, regionGrowth). */
     struct CV_EXPORTS_W_SIMPLE LSDParams
     {
         CV_WRAP LSDParams(); //!< the defaults (OpenCV's LSD uses LSD_REFINE_STD at scale 0.8)
@@ -255,6 +265,7 @@ public:
         CV_PROP_RW double seedGradientRatio; //!< BASE_FAST_LSD only: regions are seeded only at pixels whose gradient norm is at least this times LSD's threshold quant / sin(angleTolerance), and weaker ones only join them, in [1, 100]; 1 seeds everywhere, as the LSD algorithm. Default 2.5.
         CV_PROP_RW int seedAlignedNeighbours; //!< BASE_FAST_LSD only: regions are seeded only at pixels with at least this many of their two 8-neighbours along their level line aligned with them (an edge, not texture), in [0, 2]; 0 as the LSD algorithm. Default 2.
         CV_PROP_RW int tileHeight;          //!< BASE_FAST_LSD only: regions grow in parallel in horizontal tiles of about this many rows at the analysis scale, laid out from the image size alone, and are joined across them (without tiles, as the LSD algorithm), in 0 (no tiles) or [16, 100000]. Default 64.
+        CV_PROP_RW int regionGrowth;        //!< BASE_FAST_LSD only: one of LSDAdvance::RegionGrowth, when a region's direction takes in the pixels that join it (GROWTH_PER_PIXEL as the LSD algorithm). Default GROWTH_PER_NEIGHBOURHOOD.
     };
 
     /** @brief FastLineDetector's parameters (@cite Lee14), used by BASE_FLD, with the meaning of
