@@ -15,7 +15,7 @@
 //   test of a neighbour has no branch (whether a neighbour is free is as good as random), and the
 //   region's direction is the sum of its unit vectors, kept in float;
 // - the NFA (refine = LSD_REFINE_ADV only): log(n!) from a table grown on demand.
-// Options of its own, each of which gives the LSD algorithm at 1 or 0:
+// Options of its own, each of which gives the LSD algorithm at 1, 0 or GROWTH_PER_PIXEL:
 // - seeds above a gradient level (LSDParams::seedGradientRatio): regions are grown in order of
 //   decreasing gradient, so a region only takes pixels weaker than its seed. Leaving out the seeds
 //   below a level keeps exactly the regions of the stronger seeds and grows none of the weak ones;
@@ -26,7 +26,10 @@
 //   alone. The regions of each tile grow over its own rows only, each tile in its own task; the
 //   regions that reach the seam between two tiles are set aside, and those 8-connected across
 //   it with the same direction are then joined into one, so that a segment crossing a seam comes
-//   out whole. The output does not depend on the number of threads.
+//   out whole. The output does not depend on the number of threads;
+// - growth per neighbourhood (LSDParams::regionGrowth): the 8 neighbours of a region's pixel are
+//   tested together, four at a time, against the region's direction before any of them joined,
+//   with one branch where the LSD algorithm's growth has eight unpredictable ones.
 // The gradient runs in parallel over rows, the regions over tiles; nothing else depends on the
 // order of the tasks.
 

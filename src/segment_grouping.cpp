@@ -180,9 +180,9 @@ public:
     // Compares the queued pairs and unites the segments of the adjacent ones.
     void compareAndUnite()
     {
-        const Point2d* point = &points[0];
-        const int* segment = &segmentOf[0];
-        Vec2i* adjacentPairs = &pairs[0];
+        const Point2d* point = points.data();
+        const int* segment = segmentOf.data();
+        Vec2i* adjacentPairs = pairs.data();
         int adjacent = 0;
         for (int i = 0; i < count; i++)
         {
@@ -320,7 +320,7 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
     // Counting sort into cells: the count of cell c at c + 2, the running sum, then each endpoint
     // filed at the start of its cell, kept at c + 1 and moved on, which leaves the start of c at c.
     ws.cellStart.assign(cellCount + 2, 0);
-    int* const start = &ws.cellStart[0];
+    int* const start = ws.cellStart.data();
     for (int e = 0; e < 2 * n; e++)
         start[ws.cellOfEndpoint[e] + 2]++;
     runningSum(start + 2, cellCount);

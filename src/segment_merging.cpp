@@ -434,7 +434,7 @@ void mergeLongestFirst(GroupWorkspace& ws, const MergingParams& params, const Ma
             {
                 // Every shorter segment of the group near the base's line whose projection comes
                 // within the radius.
-                gate.visitMayPass(&ws.ranked[0][0], &ws.ranked[1][0], &ws.ranked[2][0], &ws.ranked[3][0], k + 1, n,
+                gate.visitMayPass(ws.ranked[0].data(), ws.ranked[1].data(), ws.ranked[2].data(), ws.ranked[3].data(), k + 1, n,
                                   [&](int j) {
                                       const int seg = ws.order[j];
                                       if (!ws.consumed[seg] &&
