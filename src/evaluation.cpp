@@ -6,6 +6,7 @@
 
 #include "precomp.hpp"
 #include "opencv2/core/utils/filesystem.hpp"
+#include "opencv2/lsd_advance/pose_evaluation.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -94,6 +95,65 @@ Mat matrix3x4(const std::vector<double>& row, const String& path)
         CV_Error_(Error::StsParseError, ("%s: expected 12 numbers per row (a 3x4 matrix), got %zu",
                                          path.c_str(), row.size()));
     return Mat(row, true).reshape(1, 3);
+}
+
+// The right camera's frames beside the left ones of `left` (a subfolder of the sequence): the
+// same names, each one there; none when the sequence has no right folder.
+std::vector<String> rightImagesOf(const String& folder, const char* left, const std::vector<String>& leftPaths)
+{
+    const std::string leftName = left;
+    const std::string rightName = leftName == "image_l" ? "image_r" : leftName == "image_0" ? "image_1" : "cam1/data";
+    const String rightDir = utils::fs::join(folder, rightName);
+    std::vector<String> paths;
+    if (!*left || !utils::fs::isDirectory(rightDir))
+        return paths;
+    for (const String& leftPath : leftPaths)
+    {
+        const String path = utils::fs::join(rightDir, leftPath.substr(leftPath.find_last_of("/\\") + 1));
+        if (!utils::fs::exists(path))
+            CV_Error_(Error::StsError, ("missing right image %s (%s/ must hold a frame of each name in %s/)",
+                                        path.c_str(), rightName.c_str(), left));
+        paths.push_back(path);
+    }
+    return paths;
+}
+
+
+// One view of a Strecha-style camera file: K (3 rows), distortion (1 row, zero), R (3 rows, camera
+// to world), the centre C (1 row), W H (1 row).
+void readCameraFile(const String& path, MultiViewData& data)
+{
+    const std::vector<std::vector<double> > rows = readNumberRows(path, false);
+    const size_t widths[] = { 3, 3, 3, 3, 3, 3, 3, 3, 2 };
+    bool ok = rows.size() == 9;
+    for (size_t r = 0; ok && r < rows.size(); r++)
+        ok = rows[r].size() == widths[r];
+    if (!ok)
+        CV_Error_(Error::StsParseError, ("%s: expected 9 rows: K (3 rows of 3), the distortion (3), R (3 rows of 3), "
+                                         "the centre C (3) and the image size W H", path.c_str()));
+    Mat K(3, 3, CV_64F), R(3, 3, CV_64F), C(3, 1, CV_64F);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+        {
+            K.at<double>(r, c) = rows[r][c];
+            R.at<double>(r, c) = rows[4 + r][c];
+            C.at<double>(c) = rows[7][c];
+        }
+    if (!(K.at<double>(0, 0) > 0 && K.at<double>(1, 1) > 0) || K.at<double>(1, 0) != 0 || K.at<double>(2, 0) != 0 ||
+        K.at<double>(2, 1) != 0 || K.at<double>(2, 2) != 1)
+        CV_Error_(Error::StsParseError, ("%s: K must be [fx s cx; 0 fy cy; 0 0 1] with fx, fy > 0", path.c_str()));
+    if (rows[3][0] != 0 || rows[3][1] != 0 || rows[3][2] != 0)
+        CV_Error_(Error::StsParseError, ("%s: the distortion must be 0 0 0 (undistorted images)", path.c_str()));
+    // The file's 6 significant digits leave R orthonormal to about 1e-6.
+    if (norm(R.t() * R, Mat::eye(3, 3, CV_64F), NORM_INF) > 1e-4 || !(determinant(R) > 0))
+        CV_Error_(Error::StsParseError, ("%s: R is not a rotation", path.c_str()));
+    if (!(rows[8][0] >= 1 && rows[8][1] >= 1))
+        CV_Error_(Error::StsParseError, ("%s: the image size must be positive", path.c_str()));
+    Mat pose;
+    hconcat(R, C, pose);
+    data.cameraMatrices.push_back(K);
+    data.poses.push_back(pose);
+    data.imageSizes.push_back(Size(cvRound(rows[8][0]), cvRound(rows[8][1])));
 }
 
 } // namespace
@@ -255,7 +315,10 @@ SequenceData loadSequence(const String& folder)
         if (utils::fs::isDirectory(dir))
             data.imagePaths = imagesIn(dir);
         if (!data.imagePaths.empty())
+        {
+            data.rightImagePaths = rightImagesOf(folder, sub, data.imagePaths);
             break;
+        }
     }
     if (data.imagePaths.empty())
         CV_Error_(Error::StsError, ("no image in %s (looked in image_l/, image_0/, cam0/data/ and the folder itself)",
@@ -277,6 +340,30 @@ SequenceData loadSequence(const String& folder)
         if (data.poses.size() != data.imagePaths.size())
             CV_Error_(Error::StsError, ("%s has %zu poses for %zu images", poses.c_str(), data.poses.size(),
                                         data.imagePaths.size()));
+    }
+    return data;
+}
+
+MultiViewData loadMultiView(const String& folder)
+{
+    const String imageDir = utils::fs::join(folder, "images"), cameraDir = utils::fs::join(folder, "gt_dense_cameras");
+    if (!utils::fs::isDirectory(imageDir) || !utils::fs::isDirectory(cameraDir))
+        CV_Error_(Error::StsError, ("%s is not a multi-view folder: expected images/ and gt_dense_cameras/ in it",
+                                    folder.c_str()));
+    std::vector<String> cameras;
+    glob(utils::fs::join(cameraDir, "*.camera"), cameras, false);
+    std::sort(cameras.begin(), cameras.end());
+    if (cameras.empty())
+        CV_Error_(Error::StsError, ("%s holds no NAME.camera file", cameraDir.c_str()));
+    MultiViewData data;
+    for (const String& camera : cameras)
+    {
+        const std::string file = camera.substr(camera.find_last_of("/\\") + 1);
+        const String image = utils::fs::join(imageDir, file.substr(0, file.size() - 7));
+        if (!utils::fs::exists(image))
+            CV_Error_(Error::StsError, ("missing image %s (of the camera file %s)", image.c_str(), camera.c_str()));
+        readCameraFile(camera, data);
+        data.imagePaths.push_back(image);
     }
     return data;
 }

@@ -783,6 +783,119 @@ TEST(LSDAdvance_Evaluation, sequence_throws_on_pose_count_mismatch_or_no_image)
     EXPECT_THROW(loadSequence(empty / "missing"), cv::Exception);
 }
 
+TEST(LSDAdvance_Evaluation, sequence_loads_the_right_frames_of_a_stereo_pair)
+{
+    TempFolder root;
+    writeFrames(root / "image_l", 3);
+    SequenceData seq = loadSequence(root.path);
+    EXPECT_TRUE(seq.rightImagePaths.empty());
+    writeFrames(root / "image_r", 3);
+    seq = loadSequence(root.path);
+    ASSERT_EQ(3u, seq.rightImagePaths.size());
+    for (int k = 0; k < 3; k++)
+        EXPECT_EQ(cv::utils::fs::join(root / "image_r", cv::format("%06d.png", k)), seq.rightImagePaths[k]);
+    // A right folder without one of the left frames: an error that names the missing image.
+    ASSERT_EQ(0, std::remove((root / "image_r" + "/000001.png").c_str()));
+    try
+    {
+        loadSequence(root.path);
+        ADD_FAILURE() << "expected an exception";
+    }
+    catch (const cv::Exception& e)
+    {
+        EXPECT_NE(std::string::npos, e.msg.find("000001.png")) << e.msg;
+    }
+}
+
+TEST(LSDAdvance_Evaluation, kitti_sequence_has_its_right_frames)
+{
+    const SequenceData seq = loadSequence(dataFolder("kitti_seq1"));
+    ASSERT_EQ(51u, seq.imagePaths.size());
+    ASSERT_EQ(51u, seq.rightImagePaths.size());
+    const Mat left = imread(seq.imagePaths[7], IMREAD_GRAYSCALE), right = imread(seq.rightImagePaths[7], IMREAD_GRAYSCALE);
+    EXPECT_EQ(left.size(), right.size());
+    EXPECT_GT(cvtest::norm(left, right, NORM_L1), 0);
+}
+
+// ---------------------------------------------------------------- multi-view loader
+
+// A Strecha-style camera file of a camera at centre C, turned by `yawDeg` about the vertical axis.
+std::string cameraText(double yawDeg, const Vec3d& C, const std::string& distortion = "0 0 0")
+{
+    const double a = yawDeg * CV_PI / 180.0;
+    return cv::format("1000 0 320\n0 1000 240\n0 0 1\n%s\n%.9f 0 %.9f\n0 1 0\n%.9f 0 %.9f\n%g %g %g\n640 480\n",
+                      distortion.c_str(), std::cos(a), std::sin(a), -std::sin(a), std::cos(a), C[0], C[1], C[2]);
+}
+
+void writeView(const TempFolder& root, const std::string& name, const std::string& camera)
+{
+    ASSERT_TRUE(cv::utils::fs::createDirectories(root / "images"));
+    ASSERT_TRUE(cv::utils::fs::createDirectories(root / "gt_dense_cameras"));
+    ASSERT_TRUE(cv::imwrite(root / "images" + "/" + name, Mat(4, 4, CV_8UC1, Scalar(9))));
+    writeText(root / "gt_dense_cameras" + "/" + name + ".camera", camera);
+}
+
+TEST(LSDAdvance_Evaluation, multi_view_loads_views_cameras_and_poses_in_name_order)
+{
+    TempFolder root;
+    writeView(root, "0001.jpg", cameraText(10, Vec3d(1, 2, 3)));
+    writeView(root, "0000.jpg", cameraText(0, Vec3d(0, 0, 0)));
+    const MultiViewData data = loadMultiView(root.path);
+    ASSERT_EQ(2u, data.imagePaths.size());
+    EXPECT_EQ(root / "images" + "/0000.jpg", data.imagePaths[0]);
+    EXPECT_EQ(root / "images" + "/0001.jpg", data.imagePaths[1]);
+    ASSERT_EQ(2u, data.poses.size());
+    EXPECT_EQ(Size(4, 3), data.poses[1].size());
+    EXPECT_DOUBLE_EQ(3.0, data.poses[1].at<double>(2, 3));
+    EXPECT_NEAR(std::cos(10 * CV_PI / 180), data.poses[1].at<double>(0, 0), 1e-9);
+    EXPECT_DOUBLE_EQ(1000.0, data.cameraMatrices[0].at<double>(0, 0));
+    EXPECT_EQ(Size(640, 480), data.imageSizes[1]);
+}
+
+TEST(LSDAdvance_Evaluation, multi_view_throws_on_malformed_cameras_or_missing_images)
+{
+    const struct
+    {
+        const char* what;
+        std::string camera;
+    } bad[] = { { "a distortion", cameraText(0, Vec3d(0, 0, 0), "0.1 0 0") },
+                { "R not a rotation", "1000 0 320\n0 1000 240\n0 0 1\n0 0 0\n1 0 0\n0 2 0\n0 0 1\n0 0 0\n640 480\n" },
+                { "a missing row", "1000 0 320\n0 1000 240\n0 0 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 0 0\n" },
+                { "K with a negative focal length", "-1000 0 320\n0 1000 240\n0 0 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 0 0\n640 480\n" },
+                { "a word for a number", "1000 0 320\n0 1000 240\n0 0 1\n0 0 0\n1 0 0\n0 1 zero\n0 0 1\n0 0 0\n640 480\n" } };
+    for (const auto& item : bad)
+    {
+        SCOPED_TRACE(item.what);
+        TempFolder root;
+        writeView(root, "0000.jpg", item.camera);
+        EXPECT_THROW(loadMultiView(root.path), cv::Exception);
+    }
+    TempFolder missingImage;
+    writeView(missingImage, "0000.jpg", cameraText(0, Vec3d(0, 0, 0)));
+    writeText(missingImage / "gt_dense_cameras" + "/0001.jpg.camera", cameraText(0, Vec3d(1, 0, 0)));
+    EXPECT_THROW(loadMultiView(missingImage.path), cv::Exception);
+    TempFolder empty;
+    EXPECT_THROW(loadMultiView(empty.path), cv::Exception);
+}
+
+TEST(LSDAdvance_Evaluation, strecha_fountain_cameras_project_consistently)
+{
+    const MultiViewData data = loadMultiView(dataFolder("strecha_fountain_p11"));
+    ASSERT_EQ(11u, data.imagePaths.size());
+    for (size_t v = 0; v < data.poses.size(); v++)
+    {
+        SCOPED_TRACE(data.imagePaths[v]);
+        EXPECT_EQ(Size(3072, 2048), data.imageSizes[v]);
+        // Consecutive views 1.4 to 2.1 m apart.
+        if (v > 0)
+        {
+            const double step = cv::norm(data.poses[v].col(3), data.poses[v - 1].col(3));
+            EXPECT_GT(step, 1.0);
+            EXPECT_LT(step, 2.5);
+        }
+    }
+}
+
 TEST(LSDAdvance_Evaluation, sequence_folder_may_hold_the_images_directly)
 {
     TempFolder root;

@@ -8,6 +8,7 @@
 #include "opencv2/lsd_advance/lsd_advance.hpp"
 #include "opencv2/lsd_advance/keylines.hpp"
 #include "opencv2/lsd_advance/evaluation.hpp"
+#include "opencv2/lsd_advance/pose_evaluation.hpp"
 
 /** @defgroup lsd_advance Improved line segment detection for SLAM front ends
 

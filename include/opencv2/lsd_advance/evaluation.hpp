@@ -125,7 +125,8 @@ CV_EXPORTS_W std::vector<LabelledImage> loadYorkUrban(const String& folder);
 and poses. */
 struct CV_EXPORTS_W_SIMPLE SequenceData
 {
-    CV_PROP_RW std::vector<String> imagePaths;  //!< frames in name order
+    CV_PROP_RW std::vector<String> imagePaths;  //!< frames in name order (the left camera's of a stereo sequence)
+    CV_PROP_RW std::vector<String> rightImagePaths;  //!< the right camera's frames of the same names (empty if absent)
     CV_PROP_RW Mat P0;                          //!< 3x4 CV_64F projection matrix of the left camera (empty if absent)
     CV_PROP_RW Mat P1;                          //!< 3x4 CV_64F projection matrix of the right camera (empty if absent)
     CV_PROP_RW std::vector<Mat> poses;          //!< 3x4 CV_64F [R|t] of each frame in the first frame's coordinates (empty if absent)
@@ -133,9 +134,11 @@ struct CV_EXPORTS_W_SIMPLE SequenceData
 
 /** @brief Loads a sequence folder: `image_l/` (or `image_0/`, or `cam0/data/` as in EuRoC
 @cite Burri2016, or the folder itself, the first that holds images) with its PNG, JPEG, PPM,
-PGM or BMP images in name order, `calib.txt` (rows of 12 numbers, optionally prefixed `P0:`)
-and `poses.txt` (12 numbers per frame), both optional. Throws when no image is found, or when
-`poses.txt` exists with a row count different from the number of images.
+PGM or BMP images in name order, the right camera's frames of the same names in `image_r/`
+(`image_1/`, `cam1/data/`) when that folder exists, `calib.txt` (rows of 12 numbers, optionally
+prefixed `P0:`) and `poses.txt` (12 numbers per frame), both optional. Throws when no image is
+found, when the right folder lacks a frame of the left one, or when `poses.txt` exists with a row
+count different from the number of images.
 @param folder The sequence's folder.
 @return The image paths, and the matrices and poses that the folder holds.
 */
