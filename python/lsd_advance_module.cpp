@@ -32,6 +32,8 @@
 
 using namespace cv;
 
+typedef std::vector<int> vector_int;
+typedef std::vector<uchar> vector_uchar;
 typedef std::vector<DMatch> vector_DMatch;
 typedef std::vector<Mat> vector_Mat;
 

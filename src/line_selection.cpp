@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // After the clipping: what a front end keeps of the lines. A minimum length, an order that means
-// something (strongest first with an image, longest first without), and a budget of the first N.
+// something (strongest first with an image, longest first without; or that order taken across
+// bins of direction), and a budget of the first N.
 
 #include "precomp.hpp"
 
@@ -31,10 +32,34 @@ void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<in
     order.resize(kept);
 }
 
-void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, double minLength, int maxLines,
-                          KnownResponses& known, std::vector<Vec4f>& selected, std::vector<float>& responses,
-                          std::vector<int>& keptFrom)
+void acrossDirections(const std::vector<Vec4f>& lines, int bins, int maxLines, std::vector<int>& order,
+                      std::vector<int>& rankInBin)
 {
+    CV_Assert(bins >= 1 && maxLines >= 0);
+    std::vector<int> linesInBin(bins, 0);
+    rankInBin.resize(lines.size());
+    for (int i : order)
+    {
+        const Vec4f& l = lines[i];
+        double angle = std::atan2((double)l[3] - l[1], (double)l[2] - l[0]);  // (-pi, pi]
+        if (angle < 0)
+            angle += CV_PI;
+        if (angle >= CV_PI)  // undirected: pi is 0
+            angle -= CV_PI;
+        const int bin = std::min(bins - 1, (int)(angle * bins / CV_PI));
+        rankInBin[i] = linesInBin[bin]++;
+    }
+    // Stable: equal ranks keep the strongest-first order.
+    std::stable_sort(order.begin(), order.end(), [&rankInBin](int a, int b) { return rankInBin[a] < rankInBin[b]; });
+    if (maxLines > 0 && order.size() > (size_t)maxLines)
+        order.resize(maxLines);
+}
+
+void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, const SelectionParams& params,
+                          Size imageSize, KnownResponses& known, std::vector<Vec4f>& selected,
+                          std::vector<float>& responses, std::vector<int>& keptFrom)
+{
+    const double minLength = selectionMinLength(params, imageSize);
     // Every line is at least 0 long: without a minimum, the lines themselves, no length computed.
     const bool everyLine = minLength <= 0;
     if (!everyLine)
@@ -55,7 +80,13 @@ void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, doub
     order.resize(candidates.size());
     for (size_t i = 0; i < order.size(); i++)
         order[i] = (int)i;
-    strongestFirst(keys, maxLines, order);
+    if (params.lineOrder == LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS)
+    {
+        strongestFirst(keys, 0, order);
+        acrossDirections(candidates, params.directionBins, params.maxLines, order, rankInBin);
+    }
+    else
+        strongestFirst(keys, params.maxLines, order);
 
     selected.resize(order.size());
     keptFrom.resize(order.size());

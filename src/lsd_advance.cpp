@@ -183,9 +183,8 @@ private:
         const std::vector<Vec4f>& unselected = imageSize.empty() ? last : frame.clipped;
 
         const int64 s = getTickCount();
-        const lsda::SelectionParams selection(parameters.own);
-        frame.selection.apply(unselected, gray, lsda::selectionMinLength(selection, imageSize), selection.maxLines,
-                              frame.knownResponses, frame.selected, frame.responses, frame.keptFrom);
+        frame.selection.apply(unselected, gray, lsda::SelectionParams(parameters.own), imageSize, frame.knownResponses,
+                              frame.selected, frame.responses, frame.keptFrom);
         frame.provenance.followKept(frame.keptFrom, unselected.size());
         stats.selectionMs = elapsedMs(s);
         stats.outputSegments = (int)frame.selected.size();

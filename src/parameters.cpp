@@ -204,12 +204,11 @@ Parameters presetParameters(int preset)
         p.own.keepStrongSegments = true;
         break;
     case LSDAdvance::PRESET_FRONT_END:
-        // A point-line front end's regime (PL-VINS: LSD at scale 0.5, lines of at least
-        // 0.125 min(W, H), about 60 of them): our base nearer full resolution, the same minimum and
-        // budget, the strongest lines first (doc/matching.md).
-        p.lsd.scale = 0.9;
-        p.own.minLineLengthRatio = 0.125;
+        // A point-line front end's budget (PL-VINS keeps about 60 lines), spread over the directions:
+        // of the budget policies measured by the poses they give, the one that did best on the even
+        // pairs of the stereo and multi-view sets (doc/pose.md).
         p.own.maxLines = 60;
+        p.own.lineOrder = LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS;
         break;
     default:
         CV_Error_(Error::StsOutOfRange, ("createLSDAdvance: preset must be %s, got %d",

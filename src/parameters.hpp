@@ -48,7 +48,9 @@
     X(double, maxPerpendicularOffset, MaxPerpendicularOffset, 1.5, Range::real(0, CLOSED, 100, CLOSED, " px"), nullptr) \
     X(double, minLineLength, MinLineLength, 0.0, Range::real(0, CLOSED, 100000, CLOSED, " px"), nullptr)          \
     X(double, minLineLengthRatio, MinLineLengthRatio, 0.0, Range::real(0, CLOSED, 1, CLOSED), nullptr)            \
-    X(int, maxLines, MaxLines, 0, Range::real(1, CLOSED, 100000, CLOSED).orValue(0, "all"), nullptr)
+    X(int, maxLines, MaxLines, 0, Range::real(1, CLOSED, 100000, CLOSED).orValue(0, "all"), nullptr)              \
+    X(int, lineOrder, LineOrder, LSDAdvance::LINE_ORDER_STRONGEST, Range::enumOf(kLineOrders), nullptr)           \
+    X(int, directionBins, DirectionBins, 6, Range::real(2, CLOSED, 180, CLOSED), nullptr)
 
 // LSDAdvance::LSDParams: X(type, field, default, range, key in files of version 4.6.0 or nullptr)
 #define LSDA_LSD_PARAMS(X)                                                                                         \
@@ -108,6 +110,7 @@ const char* const kAngleBinnings[] = { "ANGLE_BINS_STRICT", "ANGLE_BINS_NEIGHBOU
 const char* const kMergeStrategies[] = { "MERGE_NONE", "MERGE_BASELINES", "MERGE_LONGEST_FIRST" };
 const char* const kLsdRefinements[] = { "LSD_REFINE_NONE", "LSD_REFINE_STD", "LSD_REFINE_ADV" };
 const char* const kRegionGrowths[] = { "GROWTH_PER_PIXEL", "GROWTH_PER_NEIGHBOURHOOD" };
+const char* const kLineOrders[] = { "LINE_ORDER_STRONGEST", "LINE_ORDER_ACROSS_DIRECTIONS" };
 const char* const kGradientOperators[] = { "PREWITT", "SOBEL", "SCHARR", "LSD" };
 const int kApertureSizes[] = { 3, 5, 7 };
 const char* const kPresets[] = { "PRESET_MOST_ACCURATE", "PRESET_FASTEST", "PRESET_PAPER", "PRESET_SEQUENCE",
@@ -124,6 +127,7 @@ static_assert(LSDA_COUNT_OF(kAngleBinnings) == LSDAdvance::ANGLE_BINS_NEIGHBOURS
 static_assert(LSDA_COUNT_OF(kMergeStrategies) == LSDAdvance::MERGE_LONGEST_FIRST + 1, "a name per LSDAdvance::MergeStrategy");
 static_assert(LSDA_COUNT_OF(kLsdRefinements) == kLsdRefineAdv + 1, "a name per cv::LineSegmentDetectorModes");
 static_assert(LSDA_COUNT_OF(kRegionGrowths) == LSDAdvance::GROWTH_PER_NEIGHBOURHOOD + 1, "a name per LSDAdvance::RegionGrowth");
+static_assert(LSDA_COUNT_OF(kLineOrders) == LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS + 1, "a name per LSDAdvance::LineOrder");
 static_assert(LSDA_COUNT_OF(kPresets) == LSDAdvance::PRESET_FRONT_END + 1, "a name per LSDAdvance::Preset");
 static_assert(LSDA_COUNT_OF(kGradientOperators) == EdgeDrawing::LSD + 1, "a name per EdgeDrawing::GradientOperator");
 

@@ -359,10 +359,11 @@ CV_EXPORTS void clipToImage(const std::vector<Vec4f>& segments, const Size& imag
 struct SelectionParams
 {
     explicit SelectionParams(const LSDAdvance::Params& p = LSDAdvance::Params())
-        : minLineLength(p.minLineLength), minLineLengthRatio(p.minLineLengthRatio), maxLines(p.maxLines)
+        : minLineLength(p.minLineLength), minLineLengthRatio(p.minLineLengthRatio), maxLines(p.maxLines),
+          lineOrder(p.lineOrder), directionBins(p.directionBins)
     {}
     double minLineLength, minLineLengthRatio;
-    int maxLines;
+    int maxLines, lineOrder, directionBins;
 };
 
 //! The selection's length threshold: the larger of minLineLength and minLineLengthRatio times
@@ -373,15 +374,22 @@ CV_EXPORTS double selectionMinLength(const SelectionParams& params, Size imageSi
 //! (0: all) of the lines in `order`, given as indices into the keys. order is sorted in place.
 CV_EXPORTS void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<int>& order);
 
-//! The selection of one call: lines shorter than minLength are dropped; the others are ordered
-//! by decreasing response (their responses on gray, when given: those `known`, which follows
-//! lines, lacks are computed) or else by decreasing length, and the first maxLines (0: all) are
-//! kept. keptFrom gets the index in lines of each kept one, in output order; responses, with
-//! gray, their responses (else it is emptied).
+//! LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS: `order`, strongest first (strongestFirst() of all of
+//! them), is ordered again by the rank of each line among those of its direction bin (bins of
+//! 180 / bins degrees of the undirected direction), equal ranks strongest first, and cut to the
+//! first maxLines (0: all). rankInBin is scratch.
+CV_EXPORTS void acrossDirections(const std::vector<Vec4f>& lines, int bins, int maxLines, std::vector<int>& order,
+                                 std::vector<int>& rankInBin);
+
+//! The selection of one call: lines shorter than selectionMinLength() are dropped; the others are
+//! ordered by SelectionParams::lineOrder on their keys, the responses on gray when given (those
+//! `known`, which follows lines, lacks are computed) or else the lengths, and the first maxLines
+//! (0: all) are kept. keptFrom gets the index in lines of each kept one, in output order;
+//! responses, with gray, their responses (else it is emptied).
 class LineSelection
 {
 public:
-    void apply(const std::vector<Vec4f>& lines, const Mat* gray, double minLength, int maxLines,
+    void apply(const std::vector<Vec4f>& lines, const Mat* gray, const SelectionParams& params, Size imageSize,
                KnownResponses& known, std::vector<Vec4f>& selected, std::vector<float>& responses,
                std::vector<int>& keptFrom);
 
@@ -389,7 +397,7 @@ private:
     std::vector<Vec4f> longEnough;
     std::vector<int> longFrom;
     std::vector<float> lengths;
-    std::vector<int> order;
+    std::vector<int> order, rankInBin;
 };
 
 //--- through the stages: which returned line each base segment is part of (provenance.cpp)

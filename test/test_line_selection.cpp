@@ -231,35 +231,119 @@ TEST(LSDAdvance_Selection, frameInSequence_counts_the_calls_of_one_object_until_
     }
 }
 
-TEST(LSDAdvance_Selection, front_end_preset_keeps_the_strongest_60_lines_of_an_eighth_of_the_image)
+TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directions)
 {
     const Ptr<LSDAdvance> frontEnd = createLSDAdvance(LSDAdvance::PRESET_FRONT_END);
-    EXPECT_EQ(0.9, frontEnd->getLSDParams().scale);
-    EXPECT_EQ(0.125, frontEnd->getMinLineLengthRatio());
     EXPECT_EQ(60, frontEnd->getMaxLines());
-    EXPECT_EQ(0.0, frontEnd->getMinLineLength());
+    EXPECT_EQ(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS, frontEnd->getLineOrder());
+    EXPECT_EQ(6, frontEnd->getDirectionBins());
     EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, frontEnd->getLengthFilterMode());  // stateless
 
     // Otherwise the defaults.
     Ptr<LSDAdvance> reverted = createLSDAdvance(LSDAdvance::PRESET_FRONT_END);
-    LSDAdvance::LSDParams lsd = reverted->getLSDParams();
-    lsd.scale = LSDAdvance::LSDParams().scale;
-    reverted->setLSDParams(lsd);
-    reverted->setMinLineLengthRatio(0);
     reverted->setMaxLines(0);
+    reverted->setLineOrder(LSDAdvance::LINE_ORDER_STRONGEST);
     const LSDAdvance::Params a = reverted->getParams(), b;
     for (const lsda::Field<LSDAdvance::Params>& f : lsda::fieldsOf<LSDAdvance::Params>())
         EXPECT_EQ(f.get(b), f.get(a)) << f.name;
+    EXPECT_EQ(LSDAdvance::LSDParams().scale, reverted->getLSDParams().scale);
 
+    // Its lines: the defaults' lines in the order across directions, cut to 60.
     const Mat img = building();
-    std::vector<Vec4f> lines;
+    std::vector<Vec4f> lines, all;
     frontEnd->detect(img, lines);
     EXPECT_EQ(60u, lines.size());
-    for (const Vec4f& l : lines)
-        EXPECT_GE(lsda::segmentLength(l), 0.125 * std::min(img.cols, img.rows));
+    createLSDAdvance()->detect(img, all);
+    std::vector<int> order(all.size()), scratch;
+    for (size_t i = 0; i < order.size(); i++)
+        order[i] = (int)i;
+    lsda::acrossDirections(all, 6, 60, order, scratch);
+    ASSERT_EQ(60u, order.size());
+    for (size_t i = 0; i < order.size(); i++)
+        EXPECT_EQ(all[order[i]], lines[i]) << i;
     std::vector<Vec4f> again;
     frontEnd->detect(img, again);
     EXPECT_EQ(lines, again);  // stateless
 }
+
+// The bin of a segment among `bins` bins of the undirected direction [0, 180) degrees.
+int directionBin(const Vec4f& l, int bins)
+{
+    return std::min(bins - 1, (int)(undirectedAngle(l) * bins / 180.0));
+}
+
+TEST(LSDAdvance_Selection, across_directions_takes_the_strongest_of_each_bin_then_the_next_of_each)
+{
+    // Strongest first: five near-horizontal lines, then two vertical, then one diagonal.
+    const std::vector<Vec4f> lines = { segmentAt(0, 0, 1, 90), segmentAt(0, 10, -2, 80), segmentAt(0, 20, 179, 70),
+                                       segmentAt(0, 30, 3, 60), segmentAt(0, 40, 0, 50), segmentAt(0, 0, 90, 40),
+                                       segmentAt(0, 0, -89, 30), segmentAt(0, 0, 45, 20) };
+    std::vector<int> order = { 0, 1, 2, 3, 4, 5, 6, 7 }, scratch;
+    lsda::acrossDirections(lines, 6, 0, order, scratch);
+    // Bins of 30 degrees: 0 (1, 3, 0 deg), 5 (178, 179 deg), 3 (90, 91 deg), 1 (45 deg).
+    EXPECT_EQ(std::vector<int>({ 0, 1, 5, 7, 2, 3, 6, 4 }), order);
+    // A direction and its opposite are one: a horizontal line pointing left is in bin 0.
+    std::vector<int> opposite = { 0, 1 }, scratchOpposite;
+    lsda::acrossDirections({ segmentAt(50, 0, 180, 10), segmentAt(0, 5, 0, 5) }, 6, 0, opposite, scratchOpposite);
+    EXPECT_EQ(std::vector<int>({ 0, 1 }), opposite);
+    EXPECT_EQ(0, scratchOpposite[0]);
+    EXPECT_EQ(1, scratchOpposite[1]);
+    // The first N are the budget of N: a prefix of the order of all of them.
+    std::vector<int> budget = { 0, 1, 2, 3, 4, 5, 6, 7 };
+    lsda::acrossDirections(lines, 6, 5, budget, scratch);
+    EXPECT_EQ(std::vector<int>(order.begin(), order.begin() + 5), budget);
+    // One bin: the strongest-first order.
+    std::vector<int> one = { 0, 1, 2, 3, 4, 5, 6, 7 };
+    lsda::acrossDirections(lines, 1, 0, one, scratch);
+    EXPECT_EQ(std::vector<int>({ 0, 1, 2, 3, 4, 5, 6, 7 }), one);
+}
+
+TEST(LSDAdvance_Selection, across_directions_spreads_a_budget_over_the_bins_of_real_lines)
+{
+    const Mat img = building();
+    for (int bins : { 2, 6, 12 })
+    {
+        SCOPED_TRACE(bins);
+        Ptr<LSDAdvance> spread = createLSDAdvance();
+        spread->setLineOrder(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS);
+        spread->setDirectionBins(bins);
+        std::vector<Vec4f> all, strongest, lines;
+        spread->detect(img, all);
+        createLSDAdvance()->detect(img, strongest);
+        EXPECT_EQ(asSet(strongest), asSet(all));  // without a budget, only the order changes
+        spread->setMaxLines(3 * bins);
+        spread->detect(img, lines);
+        ASSERT_EQ((size_t)(3 * bins), lines.size());
+        EXPECT_EQ(std::vector<Vec4f>(all.begin(), all.begin() + 3 * bins), lines);
+        // Every bin gives its three strongest lines, or all it holds (the others fill the budget).
+        std::vector<int> available(bins, 0), taken(bins, 0);
+        for (const Vec4f& l : all)
+            available[directionBin(l, bins)]++;
+        for (const Vec4f& l : lines)
+            taken[directionBin(l, bins)]++;
+        for (int b = 0; b < bins; b++)
+            EXPECT_GE(taken[b], std::min(3, available[b])) << "bin " << b;
+        // The responses follow the lines: each that of its line.
+        std::vector<float> responses, expected;
+        spread->getLastResponses(responses);
+        computeLineResponses(img, lines, expected);
+        EXPECT_EQ(expected, responses);
+    }
+}
+
+TEST(LSDAdvance_Selection, across_directions_orders_process_segments_by_length_within_the_bins)
+{
+    const std::vector<Vec4f> segments = { segmentAt(10, 10, 0, 100), segmentAt(10, 30, 0, 90), segmentAt(10, 50, 90, 40),
+                                          segmentAt(200, 10, 90, 30) };
+    Ptr<LSDAdvance> detector = createLSDAdvance();
+    detector->setMergeStrategy(LSDAdvance::MERGE_NONE);
+    detector->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);
+    detector->setLineOrder(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS);
+    detector->setMaxLines(2);
+    std::vector<Vec4f> lines;
+    detector->processSegments(segments, lines);
+    EXPECT_EQ(std::vector<Vec4f>({ segments[0], segments[2] }), lines);
+}
+
 
 }} // namespace

@@ -20,6 +20,7 @@
 #include "line_methods.hpp"
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
 #include "line_matching.hpp"
+#include "pose_benchmark.hpp"
 #endif
 
 #include <opencv2/core/utility.hpp>
@@ -782,6 +783,103 @@ Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vec
 }
 #endif
 
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+std::string featuresName(const PoseRow& row)
+{
+    switch (row.features)
+    {
+    case PoseFeatures::Points: return "points";
+    case PoseFeatures::PointsAndLines: return "points + lines";
+    default: return row.selection.byLength ? "lines, by length" : "lines";
+    }
+}
+
+// The row of OpenCV's LSD that a row compares with: the same features, rank and budget (LSD's own
+// rank is its length); null when there is none.
+const PoseRow* lsdRowFor(const std::vector<PoseRow>& rows, const PoseRow& row)
+{
+    for (const PoseRow& r : rows)
+        if (r.method == "LSD" && r.features == row.features && r.selection.budget == row.selection.budget)
+            return &r;
+    return nullptr;
+}
+
+std::string withInterval(const Vec3d& m, double scale, const char* fmt)
+{
+    const auto text = [&](double v) { return std::isinf(v) ? std::string("fail") : format(fmt, v * scale); };
+    return text(m[0]) + " [" + text(m[1]) + ", " + text(m[2]) + "]";
+}
+
+// The pose table: per row, what its lines gave and the estimations' errors over pairs and seeds,
+// compared pair by pair with OpenCV's LSD under the same budget.
+Table poseTable(const std::vector<PoseRow>& rows, const PoseBenchmarkParams& params)
+{
+    Table table;
+    table.header = { "method", "features", "budget", "lines / image", "3D lines / pair", "matches / pair",
+                     "solved", "rotation error, deg (median [95 % CI])", "translation error, % of step (median [95 % CI])",
+                     "success", "pose AUC", "AUC / LSD", "wins : losses vs LSD (sign test p)", "ms / image (median)",
+                     "time / LSD (median)" };
+    for (const PoseRow& row : rows)
+    {
+        std::vector<std::vector<double> > rotation, translation;
+        double matches = 0, score = 0;
+        int solved = 0, successes = 0, trials = 0;
+        for (const std::vector<PoseTrial>& pair : row.pairs)
+        {
+            rotation.emplace_back();
+            translation.emplace_back();
+            for (const PoseTrial& t : pair)
+            {
+                rotation.back().push_back(t.rotationError);
+                translation.back().push_back(t.translationError);
+                matches += t.lineCorrespondences + t.pointCorrespondences;
+                solved += t.solved;
+                successes += t.rotationError < params.successRotation && t.translationError < params.successTranslation;
+                score += poseScore(t, params);
+                trials++;
+            }
+        }
+        const PoseRow* lsd = lsdRowFor(rows, row);
+        std::string versusAuc = "-", versus = "-", timeRatio = "-";
+        if (lsd && lsd != &row)
+        {
+            int wins = 0, losses = 0;
+            double lsdScore = 0;
+            for (size_t k = 0; k < row.pairs.size(); k++)
+                for (size_t s = 0; s < row.pairs[k].size(); s++)
+                {
+                    const double a = poseScore(row.pairs[k][s], params), b = poseScore(lsd->pairs[k][s], params);
+                    wins += a > b;
+                    losses += a < b;
+                    lsdScore += b;
+                }
+            versusAuc = lsdScore > 0 ? format("%.2f", score / lsdScore) : std::string("-");
+            versus = format("%d : %d (%.2g)", wins, losses, signTestP(wins, losses));
+            if (!row.detectMs.empty() && lsd->detectMs.size() == row.detectMs.size())
+            {
+                std::vector<double> ratios;
+                for (size_t k = 0; k < row.detectMs.size(); k++)
+                    if (lsd->detectMs[k] > 0)
+                        ratios.push_back(row.detectMs[k] / lsd->detectMs[k]);
+                timeRatio = format("%.3f", median(ratios));
+            }
+        }
+        const auto meanOf = [](const std::vector<double>& v) { return v.empty() ? 0.0 : mean(v)[0]; };
+        table.rows.push_back({ row.method, featuresName(row),
+                               row.features == PoseFeatures::Points ? std::string("-") : budgetName(row.selection.budget),
+                               row.features == PoseFeatures::Points ? std::string("-") : format("%.1f", meanOf(row.linesPerImage)),
+                               row.features == PoseFeatures::Points ? std::string("-") : format("%.1f", meanOf(row.liftedPerPair)),
+                               format("%.1f", trials ? matches / trials : 0.0), format("%d/%d", solved, trials),
+                               withInterval(medianWithInterval(rotation), 1.0, "%.3f"),
+                               withInterval(medianWithInterval(translation), 100.0, "%.1f"),
+                               format("%d/%d", successes, trials), format("%.3f", trials ? score / trials : 0.0), versusAuc,
+                               versus, row.detectMs.empty() ? std::string("-") : format("%.1f", median(row.detectMs)),
+                               timeRatio });
+    }
+    return table;
+}
+#endif
+
 // Whether OpenCV reads the image; an unreadable one is reported, counted in skipped, and left out of the run.
 bool readable(const std::string& path, size_t& skipped)
 {
@@ -794,7 +892,7 @@ bool readable(const std::string& path, size_t& skipped)
 
 int run(const AppOptions& args)
 {
-    const std::string dataset = args.oneOf("dataset", { "yorkurban", "sequence", "homography" });
+    const std::string dataset = args.oneOf("dataset", { "yorkurban", "sequence", "homography", "stereo", "multiview" });
     const String data = args.text("data");
     const std::string subset = args.oneOf("subset", { "all", "even", "odd" });
     const int repeats = args.integer("repeats", 1);
@@ -807,9 +905,22 @@ int run(const AppOptions& args)
     matching.params.maxHamming = args.integer("max-hamming", 0, 256);
     matching.budgets = args.integers("top", 0);
     matching.rank = args.oneOf("rank", { "own", "length", "contrast" });
+    PoseBenchmarkParams pose;
+    pose.budgets = args.integers("budgets", 0);
+    pose.seeds = args.integer("seeds", 1, 1000);
+    pose.orbFeatures = args.integer("orb", 1);
+    pose.pairs = args.integer("pairs", 0);
+    pose.maxHamming = args.integer("pose-hamming", 0, 256);
+    const double scale = args.number("scale", 0, 1, true);
+    if (dataset == "multiview")
+    {
+        // A relocalisation-like regime of wide baselines: looser limits than a stereo odometry step's.
+        pose.rotationLimit = 2.0;
+        pose.successRotation = 1.0;
+    }
 #else
-    if (dataset == "homography")
-        throw std::runtime_error("--dataset=homography needs OpenCV's line_descriptor module, absent from this build");
+    if (dataset == "homography" || dataset == "stereo" || dataset == "multiview")
+        throw std::runtime_error("--dataset=" + dataset + " needs OpenCV's line_descriptor module, absent from this build");
 #endif
     const bool frontEnd = args.has("frontend");
     FrontEndParams frontEndParams;
@@ -844,9 +955,11 @@ int run(const AppOptions& args)
     if (onePair && (!args.has("image1") || !args.has("image2") || !args.has("homography")))
         throw std::runtime_error("--dataset=homography needs --data=<HPatches folder>, or --image1, --image2 and "
                                  "--homography");
-    const std::string expectedData = dataset == "yorkurban" ? "YorkUrban-LineSegment (images/, gt/, list.txt)"
+    const std::string expectedData = dataset == "yorkurban"  ? "YorkUrban-LineSegment (images/, gt/, list.txt)"
                                      : dataset == "sequence" ? "a sequence (image_l/, cam0/data/ or images)"
-                                                             : "an HPatches folder (1.ppm ... 6.ppm, H_1_2 ... H_1_6)";
+                                     : dataset == "stereo"   ? "a stereo sequence (image_l/, image_r/, calib.txt, poses.txt)"
+                                     : dataset == "multiview" ? "a multi-view scene (images/, gt_dense_cameras/)"
+                                                              : "an HPatches folder (1.ppm ... 6.ppm, H_1_2 ... H_1_6)";
     if (!onePair && data.empty())
         throw std::runtime_error("--data=<folder> is required for --dataset=" + dataset + ": " + expectedData);
     if (!data.empty() && !utils::fs::isDirectory(data))
@@ -916,6 +1029,35 @@ int run(const AppOptions& args)
         table = benchmarkSequence(methods, sequence, longLength, matching);
     }
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    else if (dataset == "stereo" || dataset == "multiview")
+    {
+        std::vector<PoseRow> rows;
+        if (dataset == "stereo")
+        {
+            const SequenceData sequence = loadSequence(data);
+            std::cout << "Stereo pose: " << (pose.pairs > 0 ? std::min(pose.pairs, (int)sequence.imagePaths.size() - 1)
+                                                            : (int)sequence.imagePaths.size() - 1)
+                      << " pairs of consecutive frames of " << data;
+            rows = runStereoPose(methods, sequence, pose);
+        }
+        else
+        {
+            const MultiViewData scene = loadMultiView(data);
+            const int triplets = 2 * ((int)scene.imagePaths.size() - 2);
+            std::cout << "Multi-view pose: " << (pose.pairs > 0 ? std::min(pose.pairs, triplets) : triplets)
+                      << " triplets of consecutive views (each in both orders) of " << data << " at scale " << scale;
+            rows = runMultiViewPose(methods, scene, scale, pose);
+        }
+        std::cout << format(", %d RANSAC seed(s) per pair, %d thread(s); LBD mutual nearest neighbours (Hamming <= %d; "
+                            "between the map's two views also within %g px of the epipolar band), ORB %d points "
+                            "(Hamming <= %d); success: rotation < %g deg and translation < %g %% of the step; pose AUC: "
+                            "the mean of 1 - min(1, max(rotation / %g deg, translation / %g %% of the step)), 0 when "
+                            "not solved (doc/pose.md)\n\n",
+                            pose.seeds, getNumThreads(), pose.maxHamming, pose.epipolarTolerance, pose.orbFeatures,
+                            pose.orbMaxHamming, pose.successRotation, 100 * pose.successTranslation, pose.rotationLimit,
+                            100 * pose.translationLimit);
+        table = poseTable(rows, pose);
+    }
     else
     {
         std::vector<HomographyPair> pairs;
@@ -962,9 +1104,12 @@ int main(int argc, char** argv)
     const String keys =
         "{help h   |            | print this help }"
         "{dataset  | yorkurban  | yorkurban (structural precision/recall), sequence (counts over frames, LBD matching "
-                                  "of consecutive frames) or homography (LBD matching of image pairs) }"
+                                  "of consecutive frames), homography (LBD matching of image pairs), stereo (the pose of "
+                                  "frame t+1 from the lines of the stereo pair of frame t) or multiview (the pose of view "
+                                  "i+2 from the lines of views i and i+1) }"
         "{data     |            | data folder: YorkUrban layout (images/, gt/), a sequence (image_l/, cam0/data/ or "
-                                  "images; calib.txt + poses.txt for the epipolar check) or an HPatches folder (1.ppm..6.ppm, H_1_k) }"
+                                  "images; calib.txt + poses.txt for the epipolar check; image_r/ too for stereo), an HPatches folder (1.ppm..6.ppm, "
+                                  "H_1_k) or a multi-view scene (images/, gt_dense_cameras/) }"
         "{image1   |            | homography without --data: the first image of one pair (OpenCV sample names are found) }"
         "{image2   |            | homography without --data: the second image }"
         "{homography |          | homography without --data: 3x3 matrix file from image1 to image2 (text, or OpenCV XML) }"
@@ -985,6 +1130,14 @@ int main(int argc, char** argv)
         "{clahe    |            | front end: equalise each frame with CLAHE (clip limit 3, 8 x 8 tiles) before detection "
                                   "and LBD, as PL-VINS does (outside the times) }"
         "{track-frames | 5      | front end: the tracks counted are those of at least this many frames, >= 2 }"
+        "{budgets  | 60,100,150,0 | stereo, multiview: the line budgets of the pose rows, lines per image (0: all), "
+                                  "comma-separated, each >= 0 }"
+        "{pose-hamming | 60     | stereo, multiview: LBD matches are mutual nearest neighbours at most this far, 0 to 256 "
+                                  "(the value that gives OpenCV's LSD its best poses on KITTI at 60 and 150 lines) }"
+        "{seeds    | 3          | stereo, multiview: RANSAC seeds per pair, 1 to 1000 }"
+        "{orb      | 500        | stereo, multiview: ORB points per image of the point rows, >= 1 }"
+        "{pairs    | 0          | stereo, multiview: only the first N pairs (ordered triplets) (0: all), >= 0 }"
+        "{scale    | 1          | multiview: the images and cameras scaled by this, in (0, 1] }"
         "{top      | 0          | LBD matching: each method matches only its N lines of highest response per image (0: all), >= 0; "
                                   "a comma-separated list gives one row per N and method }"
         "{rank     | own        | the response --top ranks by: own (each method's KeyLine response: LSDAdvance's "

@@ -87,12 +87,14 @@ past it is clipped along its own line, keeping its direction, and dropped when n
 __Order and selection.__ detect() returns its lines strongest first: by decreasing response
 (computeLineResponses(), the KeyLine::response of detect(InputArray, std::vector<KeyLine>&); equal
 responses keep the stages' order). processSegments(), which has no image, returns them longest
-first. After the clipping, lines shorter than the larger of Params::minLineLength and
-Params::minLineLengthRatio times min(W, H) are dropped, then the first Params::maxLines are kept:
-a front end's budget of its best lines (all three off by default, where the lines are the same set
-as without them). The responses are computed only when something uses them: detect() always does
-(it orders by them; getLastResponses() returns them), after the minimum length, on the lines that
-pass it; processSegments() never.
+first. With Params::lineOrder LINE_ORDER_ACROSS_DIRECTIONS, that order is taken across bins of
+direction instead: the strongest of each bin first, then the second of each, and so on. After the
+clipping, lines shorter than the larger of Params::minLineLength and Params::minLineLengthRatio
+times min(W, H) are dropped, then the first Params::maxLines are kept: a front end's budget (all
+three off by default, where the lines are the same set as without them); in either order the
+first N lines are the selection of a budget of N. The responses are computed only when something
+uses them: detect() always does (it orders by them; getLastResponses() returns them), after the
+minimum length, on the lines that pass it; processSegments() never.
 
 __Mask.__ detect() and processSegments() take an optional mask: CV_8UC1 of the image's size,
 zero where the image must be ignored (a car's hood, the robot's body, dynamic objects); another
@@ -175,6 +177,17 @@ public:
         ANGLE_BINS_NEIGHBOURS = 1 //!< also the two neighbouring bins, wrapping 180 deg to 0 (default)
     };
 
+    /** @brief The order of the lines detect() and processSegments() return, in which Params::maxLines
+    keeps the first: the first N lines are the selection of a budget of N. */
+    enum LineOrder
+    {
+        LINE_ORDER_STRONGEST = 0, //!< by decreasing response (processSegments(): length) (default)
+        /** the strongest line of each of Params::directionBins bins of direction, strongest first, then
+        the second strongest of each bin, and so on: a budget spread over the directions, whose lines
+        constrain a camera pose better than as many lines of a few directions (doc/pose.md) */
+        LINE_ORDER_ACROSS_DIRECTIONS = 1
+    };
+
     /** @brief How BASE_FAST_LSD grows a region (LSDParams::regionGrowth): when the region's direction,
     against which a pixel's level-line angle is tested, takes in the pixels that have joined. */
     enum RegionGrowth
@@ -215,8 +228,9 @@ public:
         Its state is the sequence: one detector object kept across the frames (see "State"). */
         PRESET_SEQUENCE = 3,
         /** a point-line SLAM front end that keeps a budget of lines for LBD: PRESET_MOST_ACCURATE with
-        the base at LSDParams::scale 0.9, Params::minLineLengthRatio 0.125 and Params::maxLines 60
-        (the strongest 60 lines of at least 0.125 min(W, H)). Stateless, unlike PRESET_SEQUENCE. */
+        Params::maxLines 60 in LINE_ORDER_ACROSS_DIRECTIONS (the 60 strongest lines spread over 6
+        bins of direction: the lines that gave the best poses, doc/pose.md). Stateless, unlike
+        PRESET_SEQUENCE. */
         PRESET_FRONT_END = 4
     };
 
@@ -243,7 +257,9 @@ public:
         CV_PROP_RW double maxPerpendicularOffset; //!< both endpoints must lie this close to the longer one's line, pixels, in [0, 100]. Default 1.5.
         CV_PROP_RW double minLineLength;        //!< selection: lines shorter than this are dropped (0: off), pixels, in [0, 100000]. Default 0.
         CV_PROP_RW double minLineLengthRatio;   //!< selection: lines shorter than this times min(W, H) are dropped (0: off; with minLineLength too, the larger threshold applies; not used by processSegments without imageSize), in [0, 1]. Default 0.
-        CV_PROP_RW int maxLines;                //!< selection: the line budget, the first maxLines lines of the order (detect: strongest first) are kept, in 0 (all) or [1, 100000]. Default 0.
+        CV_PROP_RW int maxLines;                //!< selection: the line budget, the first maxLines lines of the order (lineOrder) are kept, in 0 (all) or [1, 100000]. Default 0.
+        CV_PROP_RW int lineOrder;               //!< selection: one of LineOrder, the order of the lines and of the budget. Default LINE_ORDER_STRONGEST.
+        CV_PROP_RW int directionBins;           //!< selection with LINE_ORDER_ACROSS_DIRECTIONS: the directions [0, 180) deg (undirected) in this many equal bins, in [2, 180]. Default 6.
     };
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
@@ -407,6 +423,10 @@ public:
     CV_WRAP virtual double getMinLineLengthRatio() const = 0;          //!< @brief Returns Params::minLineLengthRatio. @return The value.
     CV_WRAP virtual void setMaxLines(int lines) = 0;                   //!< @brief Sets Params::maxLines. @param lines The new value.
     CV_WRAP virtual int getMaxLines() const = 0;                       //!< @brief Returns Params::maxLines. @return The value.
+    CV_WRAP virtual void setLineOrder(int order) = 0;                  //!< @brief Sets Params::lineOrder. @param order The new value.
+    CV_WRAP virtual int getLineOrder() const = 0;                      //!< @brief Returns Params::lineOrder. @return The value.
+    CV_WRAP virtual void setDirectionBins(int bins) = 0;               //!< @brief Sets Params::directionBins. @param bins The new value.
+    CV_WRAP virtual int getDirectionBins() const = 0;                  //!< @brief Returns Params::directionBins. @return The value.
 };
 
 /** @brief Creates an LSDAdvance detector.
