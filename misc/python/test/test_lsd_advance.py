@@ -86,6 +86,8 @@ def set_up_for(detector, name):
         detector.setMergeStrategy(api.LSDAdvance_MERGE_BASELINES)
     if name == "minLineLength":  # the lengths the values tried (up to 10 px) drop: the base's shortest
         detector.setLengthFilterMode(api.LSDAdvance_LENGTH_FILTER_NONE)
+    if name == "directionBins":
+        detector.setLineOrder(api.LSDAdvance_LINE_ORDER_ACROSS_DIRECTIONS)
 
 
 def as_lines(lines):
@@ -676,16 +678,98 @@ class lsd_advance_test(NewOpenCVTests):
         length = np.hypot(lines[:, 2] - lines[:, 0], lines[:, 3] - lines[:, 1])
         self.assertTrue(np.all(np.diff(length) <= 1e-4))
 
-    def test_front_end_preset_is_stateless_with_a_budget_of_60_long_lines(self):
+    def test_front_end_preset_is_stateless_with_60_lines_across_directions(self):
         building = self.building()
         detector = api.createLSDAdvance(api.LSDAdvance_PRESET_FRONT_END)
         self.assertEqual(detector.getMaxLines(), 60)
-        self.assertEqual(detector.getMinLineLengthRatio(), 0.125)
-        self.assertEqual(detector.getLSDParams().scale, 0.9)
+        self.assertEqual(detector.getLineOrder(), api.LSDAdvance_LINE_ORDER_ACROSS_DIRECTIONS)
+        self.assertEqual(detector.getDirectionBins(), 6)
         lines = detector.detect(building)
         self.assertEqual(len(lines), 60)
         self.assertTrue(np.array_equal(detector.detect(building), lines))
         self.assertEqual(detector.getLastStats().frameInSequence, 1)
+
+    def test_across_directions_takes_each_bins_strongest_first_and_a_budget_is_a_prefix(self):
+        small = self.small_building()
+        detector = api.createLSDAdvance()
+        detector.setLineOrder(api.LSDAdvance_LINE_ORDER_ACROSS_DIRECTIONS)
+        detector.setDirectionBins(4)
+        every = detector.detect(small).reshape(-1, 4)
+        self.assertEqual(as_set(every), as_set(api.createLSDAdvance().detect(small)))
+        angle = np.degrees(np.arctan2(every[:, 3] - every[:, 1], every[:, 2] - every[:, 0])) % 180.0
+        bins = np.minimum((angle / 45.0).astype(int), 3)
+        present = sorted(set(bins.tolist()))
+        self.assertEqual(sorted(bins[:len(present)].tolist()), present)  # one of each bin first
+        detector.setMaxLines(10)
+        self.assertTrue(np.array_equal(detector.detect(small).reshape(-1, 4), every[:10]))
+        with self.assertRaisesRegex(cv.error, "directionBins"):
+            detector.setDirectionBins(1)
+        self.assertEqual(detector.getDirectionBins(), 4)
+
+    # ----------------------------------------------------------------------------------------
+    # Pose evaluation (line_evaluation): the solver and the geometry behind doc/pose.md
+
+    def synthetic_scene(self, lines):
+        """3D segments 4-30 m in front of a camera, their images after a known motion."""
+        K = np.array([[700.0, 0, 600], [0, 700, 180], [0, 0, 1]])
+        R, _ = cv.Rodrigues(np.radians(np.array([0.5, -1.0, 0.2])))
+        t = np.array([[0.1], [-0.05], [-1.2]])
+        rng = np.random.default_rng(4)
+        z = rng.uniform(6, 30, (lines, 2))
+        pixels = np.stack([rng.uniform(100, 1100, (lines, 2)), rng.uniform(40, 320, (lines, 2))], axis=2)
+        ends = np.concatenate([(pixels - K[:2, 2]) / 700.0 * z[..., None], z[..., None]], axis=2)
+        moved = ends.reshape(-1, 3) @ R.T + t.ravel()
+        projected = moved @ K.T
+        segments2d = (projected[:, :2] / projected[:, 2:]).reshape(lines, 4).astype(np.float32)
+        return K, R, t, ends.reshape(lines, 6).astype(np.float32), segments2d
+
+    def test_estimatePose_recovers_the_motion_from_noise_free_lines(self):
+        K, R, t, segments3d, segments2d = self.synthetic_scene(15)
+        estimate = evaluation.estimatePose(K, segments3d, segments2d)
+        self.assertTrue(estimate.solved)
+        self.assertEqual(estimate.lineInliers, 15)
+        self.assertEqual(list(estimate.lineInlierMask), [1] * 15)
+        rotation, translation = evaluation.poseError(estimate.R, estimate.t, R, t)
+        self.assertLess(rotation, 1e-3)
+        self.assertLess(translation, 1e-3)
+        params = evaluation.PoseEstimationParams()
+        params.minInliers = 16
+        self.assertFalse(evaluation.estimatePose(K, segments3d, segments2d, params=params).solved)
+        with self.assertRaisesRegex(cv.error, "counts"):
+            evaluation.estimatePose(K, segments3d, segments2d[:-1])
+
+    def test_triangulateSegments_lifts_a_stereo_match_and_drops_a_horizontal_one(self):
+        K = np.array([[700.0, 0, 600, 0], [0, 700, 180, 0], [0, 0, 1, 0]])
+        P1 = K.copy()
+        P1[0, 3] = -0.54 * 700
+        A, B = np.array([1.0, -1, 10]), np.array([1.5, 1, 12])
+        def image(P, X, Y):
+            a, b = P @ np.append(X, 1), P @ np.append(Y, 1)
+            return np.float32([a[0] / a[2], a[1] / a[2], b[0] / b[2], b[1] / b[2]])
+        horizontal = (np.array([-1.0, 0.2, 8]), np.array([1.0, 0.2, 8]))
+        left = np.array([image(K, A, B), image(K, *horizontal)])
+        right = np.array([image(P1, A, B), image(P1, *horizontal)])
+        matches = [cv.DMatch(0, 0, 0), cv.DMatch(1, 1, 0)]
+        lifted, kept = evaluation.triangulateSegments(K, P1, left.reshape(-1, 1, 4), right.reshape(-1, 1, 4), matches)
+        self.assertEqual(list(kept), [0])
+        self.assertTrue(np.allclose(lifted.reshape(-1, 6)[0], np.concatenate([A, B]), atol=1e-3))
+        F = evaluation.fundamentalFromProjections(K, P1)
+        self.assertAlmostEqual(float(np.append(right[0, :2], 1) @ F @ np.append(left[0, :2], 1)), 0.0, places=6)
+
+    def test_multi_view_and_stereo_loaders_read_the_shared_scenes(self):
+        folder = os.environ.get("LSD_ADVANCE_DATA_DIR", "")
+        scene = os.path.join(folder, "strecha_fountain_p11")
+        kitti = os.path.join(folder, "kitti_seq1")
+        if not os.path.isdir(scene) or not os.path.isdir(kitti):
+            if os.environ.get("CI") == "true":
+                self.fail("CI=true and the evaluation data is not in LSD_ADVANCE_DATA_DIR (doc/data.md)")
+            self.skipTest("LSD_ADVANCE_DATA_DIR does not hold strecha_fountain_p11 and kitti_seq1 (doc/data.md)")
+        views = evaluation.loadMultiView(scene)
+        self.assertEqual(len(views.imagePaths), 11)
+        self.assertEqual(views.poses[0].shape, (3, 4))
+        self.assertEqual(tuple(np.ravel(views.imageSizes[0])), (3072, 2048))
+        sequence = evaluation.loadSequence(kitti)
+        self.assertEqual(len(sequence.rightImagePaths), len(sequence.imagePaths))
 
     # ----------------------------------------------------------------------------------------
     # KeyLines and LBD (cv2.line_descriptor)
