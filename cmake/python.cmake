@@ -13,7 +13,9 @@
 #   LSD_ADVANCE_PYTHON=ON|OFF  build the module into <build>/python/lsd_advance/ (use it with
 #                          PYTHONPATH=<build>/python). Default: ON when the Python 3 headers and
 #                          numpy (Debian: python3-dev python3-numpy) and the OpenCV source tree are
-#                          found, OFF with sanitizers or the fuzzer. ON fetches a missing source tree.
+#                          found, OFF with sanitizers or the fuzzer; a default of OFF because
+#                          something was missing is not cached (the next configure looks again).
+#                          ON fetches a missing source tree.
 #   Python3_EXECUTABLE=<python>  interpreter to build for. Default: the first of `python3` on PATH
 #                          and /usr/bin/python3 that imports cv2 and numpy.
 #   LSD_ADVANCE_PYTHON_INSTALL_DIR=<dir>  where `cmake --install` puts the package folder
@@ -52,7 +54,14 @@ if(NOT DEFINED LSD_ADVANCE_PYTHON OR LSD_ADVANCE_PYTHON)
     set(_lsda_python_default ON)
   endif()
 endif()
-option(LSD_ADVANCE_PYTHON "Build the Python module lsd_advance (OpenCV's binding generator)" ${_lsda_python_default})
+if(DEFINED LSD_ADVANCE_PYTHON OR _lsda_python_default)
+  option(LSD_ADVANCE_PYTHON "Build the Python module lsd_advance (OpenCV's binding generator)" ${_lsda_python_default})
+else()
+  # Not asked for and not buildable now: decided again at the next configure, so that an OFF
+  # cached while the source tree was missing does not keep the module out once it is there
+  # (scripts/demo.sh configures without it, scripts/test.sh then with it).
+  set(LSD_ADVANCE_PYTHON OFF)
+endif()
 
 if(NOT LSD_ADVANCE_PYTHON)
   if(_lsda_python_missing)

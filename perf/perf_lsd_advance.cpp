@@ -42,9 +42,10 @@ Mat evaluationImage(const std::string& relativePath)
     if (path.empty() || !utils::fs::exists(path))
     {
         if (ci && std::string(ci) == "true")
-            CV_Error_(Error::StsError, ("evaluation image %s not found: set LSD_ADVANCE_DATA_DIR to ../shared/data",
-                                        relativePath.c_str()));
-        throw SkipTestException("LSD_ADVANCE_DATA_DIR does not hold " + relativePath);
+            CV_Error_(Error::StsError, ("CI=true and the evaluation image %s is not in LSD_ADVANCE_DATA_DIR ('%s'; "
+                                        "doc/data.md)", relativePath.c_str(), root ? root : ""));
+        throw SkipTestException("needs the evaluation image " + relativePath +
+                                ": LSD_ADVANCE_DATA_DIR is not set or does not hold it (doc/data.md)");
     }
     return imread(path, IMREAD_GRAYSCALE);
 }

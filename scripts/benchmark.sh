@@ -6,8 +6,8 @@
 # Usage: bash scripts/benchmark.sh [DATA_DIR]
 #
 # Measures everything the documentation quotes, in one run, and writes it to doc/results.md, the
-# one page of measured numbers (scripts/check_figures.py fails CI when another page quotes a
-# figure that page does not hold): every method in one run per data set, one thread, on
+# one page of measured numbers (scripts/check_figures.py fails CI when another page's figure is
+# not the cell of that page it names): every method in one run per data set, one thread, on
 # YorkUrban (all images, then the odd images the defaults were not tuned on), KITTI and EuRoC;
 # LBD line matching on the HPatches graffiti pairs, OpenCV's graf1/graf3 and KITTI
 # (doc/matching.md), with all lines and at line budgets of 100, 200 and 400 per image, and the
@@ -17,9 +17,10 @@
 # doc/parameter_sweep.md; the time of the defaults at one and two threads against LSD and ELSED,
 # and the tiles' instructions with the estimate for more threads (scripts/tile_work.py, valgrind;
 # doc/performance.md); the samples on OpenCV's images. It also writes the YorkUrban charts
-# (doc/pics/results_yorkurban_*.svg) and copies the YorkUrban table and the KITTI front-end table
-# into README.md (between its "results: yorkurban" and "results: frontend" markers). The page
-# says on which machine, commit and date it was made.
+# (doc/pics/results_yorkurban_*.svg), then takes the docs' quotes again from the new page
+# (scripts/check_figures.py --update: README's copies of the YorkUrban and KITTI front-end tables,
+# every figure quoted by its cell). The page says on which machine, commit and date it was made,
+# and names the data folder $LSD_ADVANCE_DATA_DIR.
 # DATA_DIR defaults to $LSD_ADVANCE_DATA_DIR, else ../shared/data beside the repository. Builds
 # (or brings up to date) the programs first. With ELSED's sources beside the repository
 # (../shared/peers/elsed) or in LSD_ADVANCE_ELSED_DIR, ELSED is built as an optional peer and
@@ -81,8 +82,8 @@ fi
   echo "# Results"
   echo
   echo "Every measured number of this repository's documentation, from one run of"
-  echo "\`bash scripts/benchmark.sh\`: generated, not edited (\`scripts/check_figures.py\` fails CI when"
-  echo "another page quotes a figure this page does not hold)."
+  echo "\`bash scripts/benchmark.sh\`: generated, not edited (another page quotes a figure by naming its"
+  echo "cell here, and \`scripts/check_figures.py\` fails CI when the figure is not the cell's)."
   echo
   echo "| | |"
   echo "|---|---|"
@@ -90,12 +91,12 @@ fi
   echo "| commit | $commit |"
   echo "| machine | $(lscpu | sed -n 's/^Model name: *//p' | head -n1), $(nproc) cores, $(free -g | awk '/^Mem:/ { print $2 }') GiB |"
   echo "| system | $(. /etc/os-release && echo "$PRETTY_NAME"), $compiler, OpenCV $opencv_version |"
-  echo "| ELSED | $([ -n "$PEER" ] && echo "built from ${PEER_ARG#-DLSD_ADVANCE_ELSED_DIR=}" || echo "not built: no ELSED rows") |"
+  echo "| ELSED | $([ -n "$PEER" ] && echo "built from its own sources (scripts/elsed_peer.sh)" || echo "not built: no ELSED rows") |"
   echo
   echo "One thread; times are medians on a machine that may be shared while it measures: compare them"
   echo "as ratios within one table (\"time / LSD\" is the median over images of each image's time"
   echo "divided by OpenCV LSD's on the same image), never across tables or runs. Every other column"
-  echo "is the same on any machine. YorkUrban is scored with SPEC.md's structural protocol (detections"
+  echo "is the same on any machine. YorkUrban is scored with the structural protocol of [algorithm.md](algorithm.md) (detections"
   echo "shifted by +0.5 px; AP and AR are means over images, F = 2 AP AR / (AP + AR)); \"long share\""
   echo "is the share of segments of 60 px or more; the matching columns follow [matching.md](matching.md)."
   echo "The methods are those of \`apps/lsd_advance_bench/line_methods.hpp\`, LSDAdvance's variants the"
@@ -190,6 +191,9 @@ PY
   echo
   output "$BUILD/lsd_advance_video" --output="$WORK/video.png"
 } >"$OUT"
+# The page names the data by the variable that points at it (doc/data.md), not by this machine's path.
+page="$(cat "$OUT")"
+printf '%s\n' "${page//"$DATA/"/\$LSD_ADVANCE_DATA_DIR/}" >"$OUT"
 
 mkdir -p "$REPO/doc/pics"
 for kind in f time long; do
@@ -197,21 +201,8 @@ for kind in f time long; do
 done
 mv "$OUT" "$PAGE"
 
-# README's results tables: the YorkUrban table and the KITTI front-end table of the page, each
-# between its markers.
-/usr/bin/python3 - "$PAGE" "$REPO/README.md" <<'PY'
-import re, sys
-page, readme = (open(p, encoding="utf-8").read() for p in sys.argv[1:])
-end = "<!-- /results -->"
-for name, heading in (("yorkurban", r"YorkUrban-LineSegment, all 51 images"),
-                      ("frontend", r"A SLAM front end \(PL-VINS's rules, doc/matching.md\): KITTI[^\n]*")):
-    table = re.search(r"^## %s\n.*?\n(\|.*?)\n\n" % heading, page, re.S | re.M).group(1)
-    begin = "<!-- results: %s (scripts/benchmark.sh copies it from doc/results.md) -->" % name
-    if begin not in readme or end not in readme.split(begin, 1)[-1]:
-        sys.exit("ERROR: README.md has no %s ... %s markers" % (begin, end))
-    head, rest = readme.split(begin, 1)
-    readme = head + begin + "\n" + table + "\n" + end + rest.split(end, 1)[1]
-open(sys.argv[2], "w", encoding="utf-8").write(readme)
-PY
-echo "[benchmark] wrote $PAGE, doc/pics/results_yorkurban_*.svg and README's results tables" >&2
-/usr/bin/python3 "$REPO/scripts/check_figures.py" "$REPO" || true
+echo "[benchmark] wrote $PAGE and doc/pics/results_yorkurban_*.svg" >&2
+# The docs' quotes of the page: every figure quoted by its cell and every copied table (README's
+# YorkUrban and front-end tables) taken again from the new page; it prints each figure that
+# changed (read its sentence again) and fails on a quote whose cell is gone.
+/usr/bin/python3 "$REPO/scripts/check_figures.py" --update "$REPO"

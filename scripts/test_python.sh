@@ -9,9 +9,10 @@
 # finds them in-tree; OpenCV's tests_common from the build's OpenCV source tree) on the module of a
 # standalone build (<build>/python/lsd_advance, LSD_ADVANCE_PYTHON=ON), the tests of the programs
 # (apps/lsd_advance_bench/test: the apps' error paths and folder runs, their method files, the C++
-# and Python samples) and of the documentation's figure check (scripts/test/). Prints
-# `python tests: N passed, M failed` last (all folders); exits non-zero when a test fails or
-# errors.
+# and Python samples) and of the scripts (scripts/test/: the documentation's checks, the configure
+# that scripts/demo.sh and scripts/test.sh share). Prints
+# `python tests: N passed, M failed, K skipped` last (all folders); exits non-zero when a test
+# fails or errors.
 #
 # Environment: LSD_ADVANCE_PY_BACKEND=cv2 tests cv2.ximgproc instead: <build dir> is then the
 # OpenCV build dir of an in-tree build, whose cv2 the caller puts on PYTHONPATH (and
@@ -28,7 +29,7 @@ PYTHON=/usr/bin/python3  # Debian's, with python3-opencv, python3-numpy and pyth
 if [ "${LSD_ADVANCE_PY_BACKEND:-standalone}" = standalone ] && \
    ! ls "$BUILD"/python/lsd_advance/_lsd_advance*.so >/dev/null 2>&1; then
   echo "ERROR: no Python module in $BUILD/python/lsd_advance (configure with -DLSD_ADVANCE_PYTHON=ON and build)" >&2
-  echo "python tests: 0 passed, 1 failed"
+  echo "python tests: 0 passed, 1 failed, 0 skipped"
   exit 1
 fi
 
@@ -39,7 +40,7 @@ OPENCV_TREE="$(cache_value OPENCV_SOURCE_DIR)"
 [ -n "$OPENCV_TREE" ] || OPENCV_TREE="$(cache_value CMAKE_HOME_DIRECTORY)"
 if [ ! -f "$OPENCV_TREE/modules/python/test/tests_common.py" ]; then
   echo "ERROR: no OpenCV source tree with modules/python/test/tests_common.py for $BUILD ('$OPENCV_TREE')" >&2
-  echo "python tests: 0 passed, 1 failed"
+  echo "python tests: 0 passed, 1 failed, 0 skipped"
   exit 1
 fi
 export PYTHONPATH="$OPENCV_TREE/modules/python/test${PYTHONPATH:+:$PYTHONPATH}"
@@ -61,16 +62,16 @@ rc=0
 "$PYTHON" -m pytest -p no:cacheprovider -q -rs --junitxml="$REPORT" "$REPO/misc/python/test" \
   "$REPO/apps/lsd_advance_bench/test" "$REPO/scripts/test" || rc=$?
 
-read -r passed failed < <("$PYTHON" - "$REPORT" <<'PY'
+read -r passed failed skipped < <("$PYTHON" - "$REPORT" <<'PY'
 import sys
 import xml.etree.ElementTree as ET
 root = ET.parse(sys.argv[1]).getroot()
 suite = root if root.tag == "testsuite" else root.find("testsuite")
 tests, failures, errors, skipped = (int(suite.get(k, 0)) for k in ("tests", "failures", "errors", "skipped"))
-print(tests - failures - errors - skipped, failures + errors)
+print(tests - failures - errors - skipped, failures + errors, skipped)
 PY
-) || { passed=0; failed=1; }
+) || { passed=0; failed=1; skipped=0; }
 # pytest exits non-zero also when nothing ran (collection error): count that as a failure.
 if [ "$rc" -ne 0 ] && [ "$failed" -eq 0 ]; then failed=1; fi
-echo "python tests: $passed passed, $failed failed"
+echo "python tests: $passed passed, $failed failed, $skipped skipped"
 [ "$rc" -eq 0 ] && [ "$failed" -eq 0 ]

@@ -93,8 +93,10 @@ inline std::string dataFolder(const char* set)
     if (folder.empty() || !utils::fs::isDirectory(folder))
     {
         if (ci && std::string(ci) == "true")
-            CV_Error_(Error::StsError, ("evaluation data %s not found: set LSD_ADVANCE_DATA_DIR to ../shared/data", set));
-        throw SkipTestException(std::string("LSD_ADVANCE_DATA_DIR does not hold ") + set);
+            CV_Error_(Error::StsError, ("CI=true and the evaluation data %s is not in LSD_ADVANCE_DATA_DIR ('%s'; "
+                                        "doc/data.md)", set, root ? root : ""));
+        throw SkipTestException(std::string("needs the evaluation data ") + set +
+                                ": LSD_ADVANCE_DATA_DIR is not set or does not hold it (doc/data.md)");
     }
     return folder;
 }
