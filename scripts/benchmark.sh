@@ -13,7 +13,9 @@
 # (doc/matching.md), with all lines and at line budgets of 100, 200 and 400 per image, and the
 # tracks the matches chain into on KITTI and EuRoC; a point-line SLAM front end's figures
 # (PL-VINS's rules: minimum length, a budget of 60 lines, one-way gated LBD matching, tracks) on
-# KITTI and EuRoC (doc/matching.md, "In a SLAM front end"); the parameter sweep of
+# KITTI and EuRoC (doc/matching.md, "In a SLAM front end"); the pose evaluation (doc/pose.md: the
+# stereo pairs of KITTI and the Strecha fountain's views at full and half size, lines only, points
+# and points + lines, at line budgets of 60, 100, 150 and all) with its summary table; the parameter sweep of
 # doc/parameter_sweep.md; the time of the defaults at one and two threads against LSD and ELSED,
 # and the tiles' instructions with the estimate for more threads (scripts/tile_work.py, valgrind;
 # doc/performance.md); the samples on OpenCV's images. It also writes the YorkUrban charts
@@ -60,6 +62,9 @@ BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance,lsdadvance_sequence"
 # The front-end mode's methods: the baselines front ends run (PL-VINS's LSD front end first: the
 # time ratios are to it), then LSDAdvance's; one word adds a method.
 FRONTEND="plvins,lsd,fld_half$PEER,lsdadvance,lsdadvance_sequence,lsdadvance_fastest,lsdadvance_front_end"
+# The pose evaluation's methods: OpenCV's LSD first (the rows compare with it), the other
+# detectors front ends use, then LSDAdvance's.
+POSE="lsd,plvins,fld,edlines$PEER,lsdadvance,lsdadvance_fastest,lsdadvance_front_end"
 
 PAGE="$REPO/doc/results.md"
 WORK="$(mktemp -d)"
@@ -136,6 +141,36 @@ fi
   run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --frontend --methods="$FRONTEND"
   section "A SLAM front end: EuRoC V1_01, still camera, 95 frames (tracks)"
   run "$B" --dataset=sequence --data="$DATA/euroc_v101_static" --frontend --methods="$FRONTEND"
+
+  section "Pose: stereo, KITTI, 50 pairs of consecutive frames (doc/pose.md)"
+  run "$B" --dataset=stereo --data="$DATA/kitti_seq1" --methods="$POSE" --csv="$WORK/pose_stereo.csv"
+  section "Pose: multi-view, Strecha fountain-P11, full size (doc/pose.md)"
+  run "$B" --dataset=multiview --data="$DATA/strecha_fountain_p11" --methods="$POSE" --csv="$WORK/pose_full.csv"
+  section "Pose: multi-view, Strecha fountain-P11, half size (doc/pose.md)"
+  run "$B" --dataset=multiview --data="$DATA/strecha_fountain_p11" --scale=0.5 --methods="$POSE" \
+    --csv="$WORK/pose_half.csv"
+  section "Pose: summary (doc/pose.md)"
+  echo "The pose AUC of lines alone at each budget, each method's own ranking, from the three tables above;"
+  echo "then the median rotation error (degrees) of ORB's 500 points alone and with each method's 60 lines."
+  echo
+  /usr/bin/python3 - "$WORK" <<'PY'
+import csv, sys
+SETS = (("stereo", "stereo"), ("full", "multi-view"), ("half", "multi-view, half size"))
+tables = {name: list(csv.DictReader(open("%s/pose_%s.csv" % (sys.argv[1], name)))) for name, _ in SETS}
+rotation = "rotation error, deg (median [95 % CI])"
+methods = [row["method"] for row in tables["stereo"] if row["features"] == "lines" and row["budget"] == "60"]
+budgets = ("60", "100", "150")
+print("| method | " + " | ".join("%s, %s" % (title, b) for _, title in SETS for b in budgets) +
+      " | " + " | ".join("%s, points + 60 lines" % title for _, title in SETS) + " |")
+print("|---|" + "---:|" * (len(SETS) * (len(budgets) + 1)))
+def cell(name, method, features, budget, column):
+    return next(r[column] for r in tables[name] if r["method"] == method and r["features"] == features and r["budget"] == budget)
+print("| ORB points alone | " + " | ".join("-" for _ in SETS for b in budgets) + " | " +
+      " | ".join(cell(name, "ORB", "points", "-", rotation).split(" ")[0] for name, _ in SETS) + " |")
+for m in methods:
+    print("| %s | " % m + " | ".join(cell(name, m, "lines", b, "pose AUC") for name, _ in SETS for b in budgets) + " | " +
+          " | ".join(cell(name, m, "points + lines", "60", rotation).split(" ")[0] for name, _ in SETS) + " |")
+PY
 
   section "Performance: one and two threads (doc/performance.md)"
   echo "OpenCV's LSD, ELSED (when built) and the defaults at \`--threads=1\` then \`--threads=2\`, one run each,"

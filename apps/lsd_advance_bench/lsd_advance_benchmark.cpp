@@ -105,13 +105,22 @@ struct Table
         std::ofstream out(path.c_str());
         if (!out)
             throw std::runtime_error("cannot write " + path);
+        // RFC 4180: a field with a comma or a quote is quoted, its quotes doubled.
+        const auto field = [](const std::string& text) {
+            if (text.find_first_of(",\"") == std::string::npos)
+                return text;
+            std::string quoted = "\"";
+            for (char c : text)
+                quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+            return quoted + "\"";
+        };
         for (size_t i = 0; i < header.size(); i++)
-            out << (i ? "," : "") << header[i];
+            out << (i ? "," : "") << field(header[i]);
         out << "\n";
         for (const auto& row : rows)
         {
             for (size_t i = 0; i < row.size(); i++)
-                out << (i ? "," : "") << row[i];
+                out << (i ? "," : "") << field(row[i]);
             out << "\n";
         }
     }
@@ -1032,23 +1041,19 @@ int run(const AppOptions& args)
     else if (dataset == "stereo" || dataset == "multiview")
     {
         std::vector<PoseRow> rows;
+        std::string what;  // the run's first line, printed once it succeeded
         if (dataset == "stereo")
         {
-            const SequenceData sequence = loadSequence(data);
-            std::cout << "Stereo pose: " << (pose.pairs > 0 ? std::min(pose.pairs, (int)sequence.imagePaths.size() - 1)
-                                                            : (int)sequence.imagePaths.size() - 1)
-                      << " pairs of consecutive frames of " << data;
-            rows = runStereoPose(methods, sequence, pose);
+            rows = runStereoPose(methods, loadSequence(data), pose);
+            what = format("Stereo pose: %zu pairs of consecutive frames of %s", rows[0].pairs.size(), data.c_str());
         }
         else
         {
-            const MultiViewData scene = loadMultiView(data);
-            const int triplets = 2 * ((int)scene.imagePaths.size() - 2);
-            std::cout << "Multi-view pose: " << (pose.pairs > 0 ? std::min(pose.pairs, triplets) : triplets)
-                      << " triplets of consecutive views (each in both orders) of " << data << " at scale " << scale;
-            rows = runMultiViewPose(methods, scene, scale, pose);
+            rows = runMultiViewPose(methods, loadMultiView(data), scale, pose);
+            what = format("Multi-view pose: %zu ordered triplets of consecutive views (each triplet in both orders) of %s at scale %g",
+                          rows[0].pairs.size(), data.c_str(), scale);
         }
-        std::cout << format(", %d RANSAC seed(s) per pair, %d thread(s); LBD mutual nearest neighbours (Hamming <= %d; "
+        std::cout << what << format(", %d RANSAC seed(s) per pair, %d thread(s); LBD mutual nearest neighbours (Hamming <= %d; "
                             "between the map's two views also within %g px of the epipolar band), ORB %d points "
                             "(Hamming <= %d); success: rotation < %g deg and translation < %g %% of the step; pose AUC: "
                             "the mean of 1 - min(1, max(rotation / %g deg, translation / %g %% of the step)), 0 when "

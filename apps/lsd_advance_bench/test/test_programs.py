@@ -184,6 +184,12 @@ APP_ERRORS = {
         (["--dataset=sequence", "--data={files}", "--frontend", "--max-angle=0"], ["--max-angle"]),
         (["--dataset=sequence", "--data={files}", "--frontend", "--max-shift=0"], ["--max-shift"]),
         (["--dataset=sequence", "--data={files}", "--frontend", "--track-frames=1"], ["--track-frames"]),
+        (["--dataset=stereo", "--data={files}", "--methods=lsd"], ["--dataset=stereo needs", "image_r/"]),
+        (["--dataset=multiview", "--data={files}", "--methods=lsd"], ["not a multi-view folder"]),
+        (["--dataset=stereo", "--data={files}", "--budgets=60,-1"], ["--budgets", "'-1'"]),
+        (["--dataset=stereo", "--data={files}", "--seeds=0"], ["--seeds"]),
+        (["--dataset=multiview", "--data={files}", "--scale=0"], ["--scale"]),
+        (["--dataset=stereo", "--data={files}", "--pose-hamming=257"], ["--pose-hamming"]),
     ],
     "lsd_advance_sweep": [
         ([], ["--data"]),
@@ -348,6 +354,85 @@ def test_front_end_on_kitti_keeps_at_most_the_budget_and_matches_at_most_its_lin
         assert int(row["tracks >= 5 frames"]) <= int(row["lines kept"])
     assert rows["PL-VINS LSD"]["total / PL-VINS LSD"] == "1.00"
     assert int(rows["PL-VINS LSD"]["matches"]) > 0
+
+
+# --------------------------------------------------------------------------------------------
+# The pose evaluation: a stereo sequence folder, malformed or cut to a few frames
+
+def kitti_folder():
+    kitti = os.path.join(os.environ.get("LSD_ADVANCE_DATA_DIR", ""), "kitti_seq1")
+    if not os.path.isfile(os.path.join(kitti, "poses.txt")) or not os.path.isdir(os.path.join(kitti, "image_r")):
+        unavailable("no kitti_seq1 with image_r/ in LSD_ADVANCE_DATA_DIR")
+    return kitti
+
+
+def stereo_folder(tmp_path, frames, right=True, calib_rows=2, pose_rows=None):
+    """The first frames of kitti_seq1 as a stereo sequence folder, optionally malformed."""
+    kitti = kitti_folder()
+    names = sorted(os.listdir(os.path.join(kitti, "image_l")))[:frames]
+    folder = tmp_path / "stereo"
+    for side in ("image_l", "image_r") if right else ("image_l",):
+        (folder / side).mkdir(parents=True)
+        for name in names:
+            os.symlink(os.path.join(kitti, side, name), str(folder / side / name))
+    with open(os.path.join(kitti, "calib.txt")) as calib:
+        (folder / "calib.txt").write_text("".join(calib.read().splitlines(True)[:calib_rows]))
+    with open(os.path.join(kitti, "poses.txt")) as poses:
+        (folder / "poses.txt").write_text("\n".join(poses.read().splitlines()[:pose_rows or frames]) + "\n")
+    return folder
+
+
+def pose_table(text):
+    """The pose table: {(method, features, budget): {column: cell}}."""
+    lines = text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("| method | features | budget |"))
+    header = [cell.strip() for cell in lines[start].strip("|").split("|")]
+    rows = {}
+    for line in lines[start + 2:]:
+        if not line.startswith("|"):
+            break
+        cells = [cell.strip() for cell in line.strip("|").split("|")]
+        rows[tuple(cells[:3])] = dict(zip(header, cells))
+    return rows
+
+
+@pytest.mark.parametrize("defect, fragments", [
+    ({"right": False}, ["--dataset=stereo needs", "image_r/"]),
+    ({"calib_rows": 1}, ["--dataset=stereo needs", "P0 and P1"]),
+    ({"pose_rows": 2}, ["poses.txt has 2 poses for 3 images"]),
+])
+def test_stereo_pose_on_a_malformed_folder_gives_one_error_line(defect, fragments, tmp_path):
+    result = run("lsd_advance_benchmark", ["--dataset=stereo", "--data=%s" % stereo_folder(tmp_path, 3, **defect),
+                                           "--methods=lsd"], tmp_path)
+    assert result.returncode == 1, result.stdout
+    errors = [line for line in result.stderr.splitlines() if line.startswith("Error:")]
+    assert len(errors) == 1, result.stderr
+    for fragment in fragments:
+        assert fragment in errors[0]
+
+
+def test_stereo_pose_scores_every_row_against_lsd_on_the_same_pairs(tmp_path):
+    """Three KITTI frames (two pairs), one seed, a budget of 60: a row per method and features, counts
+    within their bounds, LSD's row the reference of the others."""
+    folder = stereo_folder(tmp_path, 3)
+    result = run("lsd_advance_benchmark", ["--dataset=stereo", "--data=%s" % folder, "--methods=lsd,lsdadvance_front_end",
+                                           "--budgets=60", "--seeds=1", "--orb=300"], tmp_path)
+    rows = pose_table(succeeded(result))
+    front_end = "LSDAdvance (front-end preset)"
+    assert set(rows) == {("ORB", "points", "-"), ("LSD", "lines", "60"), ("LSD", "points + lines", "60"),
+                         (front_end, "lines", "60"), (front_end, "points + lines", "60"),
+                         (front_end, "lines, by length", "60")}
+    for key, row in rows.items():
+        solved, trials = (int(n) for n in row["solved"].split("/"))
+        successes = int(row["success"].split("/")[0])
+        assert trials == 2 and 0 <= successes <= solved <= trials, key
+        assert 0.0 <= float(row["pose AUC"]) <= 1.0, key
+        if key[1] != "points":
+            assert float(row["lines / image"]) <= 60, key
+            assert float(row["3D lines / pair"]) <= float(row["lines / image"]), key
+    assert rows[("LSD", "lines", "60")]["AUC / LSD"] == "-"
+    assert rows[(front_end, "lines", "60")]["wins : losses vs LSD (sign test p)"] != "-"
+    assert float(rows[("ORB", "points", "-")]["matches / pair"]) > 0
 
 
 # --------------------------------------------------------------------------------------------
