@@ -64,7 +64,7 @@ BUDGET="lsd,fld,edlines$PEER,lsdadvance_paper,lsdadvance,lsdadvance_sequence"
 FRONTEND="plvins,lsd,fld_half$PEER,lsdadvance,lsdadvance_sequence,lsdadvance_fastest,lsdadvance_front_end"
 # The pose evaluation's methods: OpenCV's LSD first (the rows compare with it), the other
 # detectors front ends use, then LSDAdvance's.
-POSE="lsd,plvins,fld,edlines$PEER,lsdadvance,lsdadvance_fastest,lsdadvance_front_end"
+POSE="lsd,plvins,fld,edlines$PEER,lsdadvance,lsdadvance_fastest,lsdadvance_sequence,lsdadvance_front_end"
 
 PAGE="$REPO/doc/results.md"
 WORK="$(mktemp -d)"

@@ -825,13 +825,13 @@ Table poseTable(const std::vector<PoseRow>& rows, const PoseBenchmarkParams& par
 {
     Table table;
     table.header = { "method", "features", "budget", "lines / image", "3D lines / pair", "matches / pair",
-                     "solved", "rotation error, deg (median [95 % CI])", "translation error, % of step (median [95 % CI])",
-                     "success", "pose AUC", "AUC / LSD", "wins : losses vs LSD (sign test p)", "ms / image (median)",
-                     "time / LSD (median)" };
+                     "inliers (solved, mean)", "solved", "rotation error, deg (median [95 % CI])",
+                     "translation error, % of step (median [95 % CI])", "success", "pose AUC", "AUC / LSD",
+                     "wins : losses vs LSD (sign test p)", "ms / image (median)", "time / LSD (median)" };
     for (const PoseRow& row : rows)
     {
         std::vector<std::vector<double> > rotation, translation;
-        double matches = 0, score = 0;
+        double matches = 0, inliers = 0, score = 0;
         int solved = 0, successes = 0, trials = 0;
         for (const std::vector<PoseTrial>& pair : row.pairs)
         {
@@ -843,6 +843,7 @@ Table poseTable(const std::vector<PoseRow>& rows, const PoseBenchmarkParams& par
                 translation.back().push_back(t.translationError);
                 matches += t.lineCorrespondences + t.pointCorrespondences;
                 solved += t.solved;
+                inliers += t.solved ? t.inliers : 0;
                 successes += t.rotationError < params.successRotation && t.translationError < params.successTranslation;
                 score += poseScore(t, params);
                 trials++;
@@ -878,7 +879,8 @@ Table poseTable(const std::vector<PoseRow>& rows, const PoseBenchmarkParams& par
                                row.features == PoseFeatures::Points ? std::string("-") : budgetName(row.selection.budget),
                                row.features == PoseFeatures::Points ? std::string("-") : format("%.1f", meanOf(row.linesPerImage)),
                                row.features == PoseFeatures::Points ? std::string("-") : format("%.1f", meanOf(row.liftedPerPair)),
-                               format("%.1f", trials ? matches / trials : 0.0), format("%d/%d", solved, trials),
+                               format("%.1f", trials ? matches / trials : 0.0),
+                               solved ? format("%.1f", inliers / solved) : std::string("-"), format("%d/%d", solved, trials),
                                withInterval(medianWithInterval(rotation), 1.0, "%.3f"),
                                withInterval(medianWithInterval(translation), 100.0, "%.1f"),
                                format("%d/%d", successes, trials), format("%.3f", trials ? score / trials : 0.0), versusAuc,
