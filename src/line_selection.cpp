@@ -41,11 +41,9 @@ void acrossDirections(const std::vector<Vec4f>& lines, int bins, int maxLines, s
     for (int i : order)
     {
         const Vec4f& l = lines[i];
-        double angle = std::atan2((double)l[3] - l[1], (double)l[2] - l[0]);  // (-pi, pi]
-        if (angle < 0)
-            angle += CV_PI;
-        if (angle >= CV_PI)  // undirected: pi is 0
-            angle -= CV_PI;
+        // The undirected angle turned by half a bin, in [0, pi): bin 0 is centred on the horizontal.
+        double angle = std::atan2((double)l[3] - l[1], (double)l[2] - l[0]) + 0.5 * CV_PI / bins;
+        angle = angle - CV_PI * std::floor(angle / CV_PI);
         const int bin = std::min(bins - 1, (int)(angle * bins / CV_PI));
         rankInBin[i] = linesInBin[bin]++;
     }

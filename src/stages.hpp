@@ -376,8 +376,8 @@ CV_EXPORTS void strongestFirst(const std::vector<float>& keys, int maxLines, std
 
 //! LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS: `order`, strongest first (strongestFirst() of all of
 //! them), is ordered again by the rank of each line among those of its direction bin (bins of
-//! 180 / bins degrees of the undirected direction), equal ranks strongest first, and cut to the
-//! first maxLines (0: all). rankInBin is scratch.
+//! 180 / bins degrees of the undirected direction, the first centred on the horizontal), equal
+//! ranks strongest first, and cut to the first maxLines (0: all). rankInBin gets each line's rank.
 CV_EXPORTS void acrossDirections(const std::vector<Vec4f>& lines, int bins, int maxLines, std::vector<int>& order,
                                  std::vector<int>& rankInBin);
 

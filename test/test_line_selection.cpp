@@ -236,7 +236,7 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     const Ptr<LSDAdvance> frontEnd = createLSDAdvance(LSDAdvance::PRESET_FRONT_END);
     EXPECT_EQ(60, frontEnd->getMaxLines());
     EXPECT_EQ(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS, frontEnd->getLineOrder());
-    EXPECT_EQ(6, frontEnd->getDirectionBins());
+    EXPECT_EQ(4, frontEnd->getDirectionBins());
     EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, frontEnd->getLengthFilterMode());  // stateless
 
     // Otherwise the defaults.
@@ -257,7 +257,7 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     std::vector<int> order(all.size()), scratch;
     for (size_t i = 0; i < order.size(); i++)
         order[i] = (int)i;
-    lsda::acrossDirections(all, 6, 60, order, scratch);
+    lsda::acrossDirections(all, 4, 60, order, scratch);
     ASSERT_EQ(60u, order.size());
     for (size_t i = 0; i < order.size(); i++)
         EXPECT_EQ(all[order[i]], lines[i]) << i;
@@ -266,10 +266,11 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     EXPECT_EQ(lines, again);  // stateless
 }
 
-// The bin of a segment among `bins` bins of the undirected direction [0, 180) degrees.
+// The bin of a segment among `bins` bins of its undirected direction, the first centred on 0 degrees.
 int directionBin(const Vec4f& l, int bins)
 {
-    return std::min(bins - 1, (int)(undirectedAngle(l) * bins / 180.0));
+    const double turned = std::fmod(undirectedAngle(l) + 90.0 / bins, 180.0);
+    return std::min(bins - 1, (int)(turned * bins / 180.0));
 }
 
 TEST(LSDAdvance_Selection, across_directions_takes_the_strongest_of_each_bin_then_the_next_of_each)
@@ -279,18 +280,23 @@ TEST(LSDAdvance_Selection, across_directions_takes_the_strongest_of_each_bin_the
                                        segmentAt(0, 30, 3, 60), segmentAt(0, 40, 0, 50), segmentAt(0, 0, 90, 40),
                                        segmentAt(0, 0, -89, 30), segmentAt(0, 0, 45, 20) };
     std::vector<int> order = { 0, 1, 2, 3, 4, 5, 6, 7 }, scratch;
-    lsda::acrossDirections(lines, 6, 0, order, scratch);
-    // Bins of 30 degrees: 0 (1, 3, 0 deg), 5 (178, 179 deg), 3 (90, 91 deg), 1 (45 deg).
-    EXPECT_EQ(std::vector<int>({ 0, 1, 5, 7, 2, 3, 6, 4 }), order);
+    lsda::acrossDirections(lines, 4, 0, order, scratch);
+    // Four bins centred on 0, 45, 90 and 135 degrees: the horizontal one holds the lines either
+    // side of it (1, 178, 179, 3, 0 deg), then 90 and 91 deg, then 45 deg.
+    EXPECT_EQ(std::vector<int>({ 0, 5, 7, 1, 6, 2, 3, 4 }), order);
+    // With six bins too: the horizontal bin holds the lines either side of the horizontal.
+    std::vector<int> six = { 0, 1, 2, 3, 4, 5, 6, 7 };
+    lsda::acrossDirections(lines, 6, 0, six, scratch);
+    EXPECT_EQ(std::vector<int>({ 0, 5, 7, 1, 6, 2, 3, 4 }), six);
     // A direction and its opposite are one: a horizontal line pointing left is in bin 0.
     std::vector<int> opposite = { 0, 1 }, scratchOpposite;
-    lsda::acrossDirections({ segmentAt(50, 0, 180, 10), segmentAt(0, 5, 0, 5) }, 6, 0, opposite, scratchOpposite);
+    lsda::acrossDirections({ segmentAt(50, 0, 180, 10), segmentAt(0, 5, 0, 5) }, 4, 0, opposite, scratchOpposite);
     EXPECT_EQ(std::vector<int>({ 0, 1 }), opposite);
     EXPECT_EQ(0, scratchOpposite[0]);
     EXPECT_EQ(1, scratchOpposite[1]);
     // The first N are the budget of N: a prefix of the order of all of them.
     std::vector<int> budget = { 0, 1, 2, 3, 4, 5, 6, 7 };
-    lsda::acrossDirections(lines, 6, 5, budget, scratch);
+    lsda::acrossDirections(lines, 4, 5, budget, scratch);
     EXPECT_EQ(std::vector<int>(order.begin(), order.begin() + 5), budget);
     // One bin: the strongest-first order.
     std::vector<int> one = { 0, 1, 2, 3, 4, 5, 6, 7 };

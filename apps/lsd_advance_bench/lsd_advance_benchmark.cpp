@@ -521,7 +521,7 @@ const char* const kFrontEndReference = "PL-VINS LSD";
 // What one method's front end did over a sequence, and what kept its lines from matching.
 struct FrontEndRun
 {
-    std::vector<double> detected, kept, matches, consistent;          // per frame (matches: per pair)
+    std::vector<double> detected, kept, matches, consistent, undecidable;  // per frame (matches: per pair)
     std::vector<double> detectMs, keepMs, lbdMs, matchMs, totalMs;    // per frame
     double consistentSum = 0, decidedSum = 0;
     LineTracks tracks;
@@ -612,7 +612,17 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
     std::vector<DescribedLines> previous(methods.size());
     std::vector<std::vector<Vec4f> > previousEligible(methods.size());
     for (const LineMethod& m : methods)
+    {
         m.reset();
+        // A front end gives LSDAdvance its rules (the budget belongs to the user), so that the
+        // detector's order chooses among the lines the front end keeps; the others it applies itself.
+        if (m.lsdAdvance)
+        {
+            m.lsdAdvance->setMinLineLength(params.minLength);
+            m.lsdAdvance->setMinLineLengthRatio(params.minLengthRatio);
+            m.lsdAdvance->setMaxLines(params.maxLines);
+        }
+    }
     for (size_t k = 0; k < frames.size(); k++)
     {
         std::cerr << "\r[frontend] frame " << k + 1 << "/" << frames.size() << std::flush;
@@ -654,14 +664,16 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
                 if (withPoses)
                 {
                     const Mat F = fundamentalFromPoses(sequence.P0, sequence.poses[k - 1], sequence.poses[k]);
-                    int consistent = 0;
+                    int consistent = 0, undecidable = 0;
                     for (const DMatch& match : matches)
                     {
                         verdicts.push_back(checkEpipolar(previous[m].lines[match.queryIdx], current.lines[match.trainIdx], F));
                         consistent += verdicts.back() == EPIPOLAR_CONSISTENT;
-                        run.decidedSum += verdicts.back() != EPIPOLAR_UNDECIDABLE;
+                        undecidable += verdicts.back() == EPIPOLAR_UNDECIDABLE;
                     }
+                    run.decidedSum += (double)matches.size() - undecidable;
                     run.consistent.push_back(consistent);
+                    run.undecidable.push_back(undecidable);
                     run.consistentSum += consistent;
                 }
                 addFrontEndDiagnostics(run, gray, previous[m], previousEligible[m], current, matches, verdicts, params);
@@ -684,7 +696,7 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
     Table figures, why;
     figures.header = { "method", "lines detected", "lines kept", "matches" };
     if (withPoses)
-        for (const char* h : { "consistent share (pooled)", "consistent matches" })
+        for (const char* h : { "consistent share (pooled)", "consistent matches", "undecidable matches" })
             figures.header.push_back(h);
     for (const std::string& h : { format("tracks >= %d frames", trackFrames), std::string("track length (frames, mean)"),
                                   std::string("detect ms"),
@@ -704,6 +716,7 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
         {
             row.push_back(format("%.3f", run.decidedSum > 0 ? run.consistentSum / run.decidedSum : 0.0));
             row.push_back(format("%.0f", median(run.consistent)));
+            row.push_back(format("%.0f", median(run.undecidable)));
         }
         std::string ratio = "-";
         if (reference < methods.size())

@@ -228,9 +228,9 @@ public:
         Its state is the sequence: one detector object kept across the frames (see "State"). */
         PRESET_SEQUENCE = 3,
         /** a point-line SLAM front end that keeps a budget of lines for LBD: PRESET_MOST_ACCURATE with
-        Params::maxLines 60 in LINE_ORDER_ACROSS_DIRECTIONS (the 60 strongest lines spread over 6
-        bins of direction: the lines that gave the best poses, doc/pose.md). Stateless, unlike
-        PRESET_SEQUENCE. */
+        Params::maxLines 60 in LINE_ORDER_ACROSS_DIRECTIONS (the 60 strongest lines spread over the
+        horizontal, the vertical and the two diagonals: the lines that gave the best poses,
+        doc/pose.md). Stateless, unlike PRESET_SEQUENCE. */
         PRESET_FRONT_END = 4
     };
 
@@ -259,7 +259,7 @@ public:
         CV_PROP_RW double minLineLengthRatio;   //!< selection: lines shorter than this times min(W, H) are dropped (0: off; with minLineLength too, the larger threshold applies; not used by processSegments without imageSize), in [0, 1]. Default 0.
         CV_PROP_RW int maxLines;                //!< selection: the line budget, the first maxLines lines of the order (lineOrder) are kept, in 0 (all) or [1, 100000]. Default 0.
         CV_PROP_RW int lineOrder;               //!< selection: one of LineOrder, the order of the lines and of the budget. Default LINE_ORDER_STRONGEST.
-        CV_PROP_RW int directionBins;           //!< selection with LINE_ORDER_ACROSS_DIRECTIONS: the directions [0, 180) deg (undirected) in this many equal bins, in [2, 180]. Default 6.
+        CV_PROP_RW int directionBins;           //!< selection with LINE_ORDER_ACROSS_DIRECTIONS: the undirected directions in this many equal bins, the first centred on the horizontal (4: horizontal, vertical and the two diagonals, each +-22.5 deg), in [2, 180]. Default 4.
     };
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's

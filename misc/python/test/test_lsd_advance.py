@@ -683,7 +683,7 @@ class lsd_advance_test(NewOpenCVTests):
         detector = api.createLSDAdvance(api.LSDAdvance_PRESET_FRONT_END)
         self.assertEqual(detector.getMaxLines(), 60)
         self.assertEqual(detector.getLineOrder(), api.LSDAdvance_LINE_ORDER_ACROSS_DIRECTIONS)
-        self.assertEqual(detector.getDirectionBins(), 6)
+        self.assertEqual(detector.getDirectionBins(), 4)
         lines = detector.detect(building)
         self.assertEqual(len(lines), 60)
         self.assertTrue(np.array_equal(detector.detect(building), lines))
@@ -696,8 +696,8 @@ class lsd_advance_test(NewOpenCVTests):
         detector.setDirectionBins(4)
         every = detector.detect(small).reshape(-1, 4)
         self.assertEqual(as_set(every), as_set(api.createLSDAdvance().detect(small)))
-        angle = np.degrees(np.arctan2(every[:, 3] - every[:, 1], every[:, 2] - every[:, 0])) % 180.0
-        bins = np.minimum((angle / 45.0).astype(int), 3)
+        angle = (np.degrees(np.arctan2(every[:, 3] - every[:, 1], every[:, 2] - every[:, 0])) + 22.5) % 180.0
+        bins = np.minimum((angle / 45.0).astype(int), 3)  # four bins centred on 0, 45, 90 and 135 degrees
         present = sorted(set(bins.tolist()))
         self.assertEqual(sorted(bins[:len(present)].tolist()), present)  # one of each bin first
         detector.setMaxLines(10)
