@@ -23,7 +23,7 @@ public:
     explicit LsdBase(const LSDAdvance::LSDParams& p)
         : lsd(createOpenCVLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
                                               p.logEps, p.densityThreshold, p.numBins)),
-          scale(p.scale), fullScaleSmoothing(p.fullScaleSigma)
+          scale(p.scale), fullScaleSmoothing(p.fullScaleSigma, p.fullScaleSmoothing)
     {}
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
     {

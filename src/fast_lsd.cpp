@@ -390,7 +390,7 @@ FastLsd::FastLsd(const LSDAdvance::LSDParams& p)
     : refine(p.refine), scale(p.scale), sigmaScale(p.sigmaScale), quant(p.quant),
       angleTolerance(p.angleTolerance), logEps(p.logEps), densityThreshold(p.densityThreshold),
       seedGradientRatio(p.seedGradientRatio), numBins(p.numBins), seedAlignedNeighbours(p.seedAlignedNeighbours),
-      tileHeight(p.tileHeight), regionGrowth(p.regionGrowth), fullScaleSmoothing(p.fullScaleSigma), acrossSeams(makePtr<Regions>())
+      tileHeight(p.tileHeight), regionGrowth(p.regionGrowth), fullScaleSmoothing(p.fullScaleSigma, p.fullScaleSmoothing), acrossSeams(makePtr<Regions>())
 {
     // The parameters are in their ranges: those of the table of parameters.hpp, which every setter checks.
     acrossSeams->fitsAnyRegion = false;

@@ -424,7 +424,7 @@ class lsd_advance_test(NewOpenCVTests):
                         setattr(params, name, not value)
                     elif isinstance(value, float):
                         setattr(params, name, value * 0.9)
-                    elif name in ("seedAlignedNeighbours", "regionGrowth"):  # 0, 1 or 2; 0 or 1
+                    elif name in ("seedAlignedNeighbours", "regionGrowth", "fullScaleSmoothing"):  # 0, 1 or 2; 0 or 1
                         setattr(params, name, value - 1)
                     elif name not in ("refine", "EdgeDetectionOperator", "cannyApertureSize"):
                         setattr(params, name, value + 2 if value > 0 else 20)
