@@ -468,8 +468,9 @@ void sampleRowsFourByFour(const LineRegion& r, const uint32_t* gradient, Size si
                               (int)gradient[index[3]]);
             const v_float32x4 dx = v_cvt_f32(v_shr<16>(v_shl<16>(g))), dy = v_cvt_f32(v_shr<16>(g));
             const v_float32x4 along = dx * c + dy * s, across = dx * minusS + dy * c;
-            // The positive part, or +0; the rest is the value (or +0): the sums of the reference.
-            const v_float32x4 alongUp = along & (along > zero), acrossUp = across & (across > zero);
+            // The positive part, or a zero; the rest is the value, or a zero: adding or subtracting
+            // a zero of either sign leaves these non-negative sums as the reference's branches do.
+            const v_float32x4 alongUp = v_max(along, zero), acrossUp = v_max(across, zero);
             alongP += alongUp;
             alongN -= along - alongUp;
             acrossP += acrossUp;
