@@ -22,8 +22,9 @@ namespace lsda {
 
 //--- the callers' arrays (segment_io.cpp)
 
-//! Returns the image as CV_8UC1 (a view when it already is); throws on any other input.
-Mat toGray8U(InputArray image);
+//! Returns the image as CV_8UC1 (a view when it already is); throws on any other input, the
+//! message starting with `what`.
+Mat toGray8U(InputArray image, const char* what = "LSDAdvance");
 
 //! Segments of an N x 1 or 1 x N CV_32FC4 array (empty for an empty one) into a caller's buffer;
 //! throws on any other layout, naming `what` in the message.
@@ -391,6 +392,19 @@ private:
     std::vector<float> lengths;
     std::vector<int> order;
 };
+
+//--- LBD descriptors of KeyLines (lbd_descriptor.cpp)
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+//! The gradient computeLBD samples, over the whole image: CV_16SC2 (dx, dy) per pixel, those of
+//! cv::Sobel (3 x 3, CV_16S) after cv::GaussianBlur (5 x 5, sigma 1) with their default borders.
+CV_EXPORTS void lbdGradient(const Mat& gray, Mat& gradient);
+
+//! computeLBD's descriptors before they are made binary: N x 72 CV_32F, those of
+//! line_descriptor::BinaryDescriptor::compute with returnFloatDescr = true. The same checks.
+CV_EXPORTS void lbdFloatDescriptors(InputArray image, const std::vector<line_descriptor::KeyLine>& keylines,
+                                    OutputArray descriptors);
+#endif
 
 //--- through the stages: which returned line each base segment is part of (provenance.cpp)
 

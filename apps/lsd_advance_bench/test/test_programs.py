@@ -184,6 +184,8 @@ APP_ERRORS = {
         (["--dataset=sequence", "--data={files}", "--frontend", "--max-angle=0"], ["--max-angle"]),
         (["--dataset=sequence", "--data={files}", "--frontend", "--max-shift=0"], ["--max-shift"]),
         (["--dataset=sequence", "--data={files}", "--frontend", "--track-frames=1"], ["--track-frames"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--lbd"], ["--lbd", "--frontend"]),
+        (["--dataset=homography", "--data={files}", "--lbd"], ["--lbd", "--dataset=yorkurban or sequence"]),
     ],
     "lsd_advance_sweep": [
         ([], ["--data"]),
@@ -348,6 +350,23 @@ def test_front_end_on_kitti_keeps_at_most_the_budget_and_matches_at_most_its_lin
         assert int(row["tracks >= 5 frames"]) <= int(row["lines kept"])
     assert rows["PL-VINS LSD"]["total / PL-VINS LSD"] == "1.00"
     assert int(rows["PL-VINS LSD"]["matches"]) > 0
+    # Both LBDs timed on the same lines; the total counts line_descriptor's for the other detectors.
+    for row in rows.values():
+        assert float(row["computeLBD ms"]) > 0 and float(row["line_descriptor LBD ms"]) > 0
+    plvins = rows["PL-VINS LSD"]
+    assert float(plvins["line_descriptor LBD ms"]) <= float(plvins["total ms"])
+
+
+def test_lbd_mode_times_both_descriptors_on_each_methods_lines(still_frames, tmp_path):
+    result = run("lsd_advance_benchmark", ["--dataset=sequence", "--data=%s" % still_frames[4], "--lbd",
+                                           "--methods=lsd,lsdadvance_front_end", "--repeats=2"], tmp_path)
+    rows = markdown_table(succeeded(result))
+    assert set(rows) == {"LSD", "LSDAdvance (front-end preset)"}
+    assert int(rows["LSDAdvance (front-end preset)"]["lines / image (median)"]) == 60
+    for row in rows.values():
+        ours, theirs = float(row["computeLBD ms / image (median)"]), float(row["line_descriptor LBD ms / image (median)"])
+        assert ours > 0 and theirs > 0
+        assert float(row["computeLBD / line_descriptor (median)"]) > 0
 
 
 # --------------------------------------------------------------------------------------------

@@ -314,6 +314,18 @@ public:
     @param mask As for detect(InputArray, OutputArray, InputArray). */
     CV_WRAP_AS(detectKeyLines) void detect(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines,
                                            InputArray mask = noArray());
+
+    /** @brief Detects line segments as KeyLines and computes their binary LBD descriptors: detect(image,
+    keylines, mask), then computeLBD() on the same image (the descriptors of
+    cv::line_descriptor::BinaryDescriptor::compute, byte for byte). Include
+    opencv2/lsd_advance/keylines.hpp (or opencv2/lsd_advance.hpp) to call it.
+    @param image As for detect(InputArray, OutputArray).
+    @param keylines Output: as detect(InputArray, std::vector<KeyLine>&, InputArray) gives them.
+    @param descriptors Output N x 32 CV_8U, row i the descriptor of keylines[i].
+    @param mask As for detect(InputArray, OutputArray, InputArray).
+    In Python: detectAndCompute(image[, mask]) -> keylines, descriptors. */
+    CV_WRAP void detectAndCompute(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines,
+                                  OutputArray descriptors, InputArray mask = noArray());
 #endif
 
     /** @brief Runs stages 1-3 on segments from any detector; the call is a frame like detect().
