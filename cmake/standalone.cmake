@@ -120,8 +120,9 @@ endif()
 # ---------------------------------------------------------------------------------------------
 # The library: shared, hidden visibility and CVAPI_EXPORTS exactly like an OpenCV module, so a
 # missing CV_EXPORTS fails here as it would in-tree.
-file(GLOB LSDA_SOURCES CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.cpp")
-file(GLOB LSDA_INTERNAL_HEADERS CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.hpp" "${LSDA_ROOT}/src/*.h")
+# src/ and its folders (src/fast_lsd/), as OpenCV's module build globs them.
+file(GLOB_RECURSE LSDA_SOURCES CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.cpp")
+file(GLOB_RECURSE LSDA_INTERNAL_HEADERS CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.hpp" "${LSDA_ROOT}/src/*.h")
 file(GLOB LSDA_PUBLIC_HEADERS CONFIGURE_DEPENDS
   "${LSDA_ROOT}/include/opencv2/lsd_advance.hpp"
   "${LSDA_ROOT}/include/opencv2/lsd_advance/*.hpp"

@@ -17,9 +17,6 @@ namespace lsda {
 
 namespace {
 
-// Rows of the image smoothed by one task of the parallel loop.
-constexpr int kRowsPerStripe = 16;
-
 // Weights in 8-bit fixed point: each pass's sum to this.
 constexpr int kWeightSum = 256;
 
@@ -159,7 +156,10 @@ const Mat& FullScaleSmoothing::apply(const Mat& gray)
     vertical.resize((size_t)(gray.cols + 2 * radius) * gray.rows);
     pixels.resize(gray.total());
     smoothed = Mat(gray.rows, gray.cols, CV_8UC1, pixels.data());
-    parallel_for_(Range(0, gray.rows), SmoothedRows(*this, gray), std::max(1.0, gray.rows / (double)kRowsPerStripe));
+    TaskLayout stripes;
+    stripes.evenly(gray.rows, kImageRowsPerTask);
+    const SmoothedRows smoothedRows(*this, gray);
+    runTasks(stripes, [&](int, const Range& rows) { smoothedRows(rows); });
     return smoothed;
 }
 

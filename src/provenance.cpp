@@ -34,23 +34,18 @@ void SegmentProvenance::followKept(const std::vector<int>& keptFrom, size_t inpu
 
 void SegmentProvenance::sources(int lineCount, OutputArrayOfArrays out) const
 {
-    std::vector<int> count(lineCount, 0);
-    for (int line : lineOf)
-        if (line >= 0)
-            count[line]++;
+    // The base segments of each line in increasing order (compressed rows; those of no line in a
+    // last row).
+    std::vector<int> rowStart, order(lineOf.size());
+    compressRows((int)lineOf.size(), lineCount + 1, [&](int i) { return lineOf[i] < 0 ? lineCount : lineOf[i]; },
+                 rowStart, [&](int i, int k) { order[k] = i; });
     out.create(lineCount, 1, CV_32S);
-    std::vector<Mat> lists(lineCount);
     for (int j = 0; j < lineCount; j++)
     {
-        out.create(count[j], 1, CV_32S, j);
-        lists[j] = out.getMat(j);
-        count[j] = 0;
-    }
-    for (size_t i = 0; i < lineOf.size(); i++)
-    {
-        const int j = lineOf[i];
-        if (j >= 0)
-            lists[j].at<int>(count[j]++) = (int)i;
+        const int count = rowStart[j + 1] - rowStart[j];
+        out.create(count, 1, CV_32S, j);
+        if (count > 0)
+            std::copy(order.begin() + rowStart[j], order.begin() + rowStart[j + 1], out.getMat(j).ptr<int>());
     }
 }
 

@@ -537,7 +537,6 @@ void ProjectionSweep::build(const std::vector<Vec4f>& geometry, const std::vecto
     ends.resize(m);
     ids.resize(m);
     segments.resize(m);
-    laneStart.assign(laneCount + 1, 0);
     positionOf.assign(geometry.size(), -1);
     nextFiled.resize(m + 1);
     previousFiled.resize(m + 1);
@@ -548,10 +547,9 @@ void ProjectionSweep::build(const std::vector<Vec4f>& geometry, const std::vecto
         starts[p] = sortBuffer[p].first.second;
         ends[p] = project(geometry[ids[p]])[1];
         positionOf[ids[p]] = p;
-        laneStart[sortBuffer[p].first.first + 1]++;
     }
-    for (int l = 0; l < laneCount; l++)
-        laneStart[l + 1] += laneStart[l];
+    // The lanes' rows over the positions, which are in lane order already.
+    compressRows(m, laneCount, [&](int p) { return sortBuffer[p].first.first; }, laneStart, [](int, int) {});
     for (int p = 0; p <= m; p++)
         nextFiled[p] = previousFiled[p] = p;
 }
@@ -663,29 +661,6 @@ void mergeGroup(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
     }
 }
 
-// The groups of a range of tasks, each task with its own workspace.
-class GroupTasks CV_FINAL : public ParallelLoopBody
-{
-public:
-    GroupTasks(const std::vector<Vec4f>& segments_, const SegmentGroups& groups_, const MergingParams& params_,
-               const Mat& mask_, MergeWorkspace& ws_, std::vector<int>& mergedInto_)
-        : segments(segments_), groups(groups_), params(params_), mask(mask_), ws(ws_), mergedInto(mergedInto_) {}
-    void operator()(const Range& range) const CV_OVERRIDE
-    {
-        for (int t = range.start; t < range.end; t++)
-            for (int g = ws.taskStart[t]; g < ws.taskStart[t + 1]; g++)
-                mergeGroup(segments, groups, g, params, mask, ws.tasks[t], ws.placed, ws.survivors[g], mergedInto);
-    }
-
-private:
-    const std::vector<Vec4f>& segments;
-    const SegmentGroups& groups;
-    const MergingParams& params;
-    const Mat& mask;
-    MergeWorkspace& ws;
-    std::vector<int>& mergedInto;
-};
-
 } // namespace
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
@@ -696,17 +671,15 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
     merged.reserve(segments.size());
     mergedInto.assign(segments.size(), -1);
     const int count = groups.count();
-    ws.taskStart.clear();
-    for (int g = 0; g < count; g++)
-        if (ws.taskStart.empty() || groups.offsets[g] - groups.offsets[ws.taskStart.back()] >= kMembersPerTask)
-            ws.taskStart.push_back(g);
-    const int tasks = (int)ws.taskStart.size();
-    ws.taskStart.push_back(count);
-    if (ws.tasks.size() < (size_t)tasks)
-        ws.tasks.resize(tasks);
+    ws.tasks.byWeight(count, kMembersPerTask, [&](int g) { return groups.offsets[g + 1] - groups.offsets[g]; });
+    if (ws.taskWorkspaces.size() < (size_t)ws.tasks.count())
+        ws.taskWorkspaces.resize(ws.tasks.count());
     ws.placed.resize(groups.members.size());
     ws.survivors.resize(count);
-    parallel_for_(Range(0, tasks), GroupTasks(segments, groups, params, mask, ws, mergedInto), tasks);
+    runTasks(ws.tasks, [&](int task, const Range& taskGroups) {
+        for (int g = taskGroups.start; g < taskGroups.end; g++)
+            mergeGroup(segments, groups, g, params, mask, ws.taskWorkspaces[task], ws.placed, ws.survivors[g], mergedInto);
+    });
 
     // The survivors in group order; the places mergedInto holds become their indices there.
     ws.outputIndex.resize(groups.members.size());

@@ -58,25 +58,8 @@ public:
 
 private:
     // Defined here to be inlined: merging calls them for every segment it visits.
-    int findNext(int p)
-    {
-        while (nextFiled[p] != p)
-        {
-            nextFiled[p] = nextFiled[nextFiled[p]];
-            p = nextFiled[p];
-        }
-        return p;
-    }
-    int findPrevious(int p)
-    {
-        int q = p + 1;
-        while (previousFiled[q] != q)
-        {
-            previousFiled[q] = previousFiled[previousFiled[q]];
-            q = previousFiled[q];
-        }
-        return q - 1;
-    }
+    int findNext(int p) { return findRoot(nextFiled.data(), p); }
+    int findPrevious(int p) { return findRoot(previousFiled.data(), p + 1) - 1; }
 
     Point2d direction, normal;
     double laneOrigin = 0, laneSize = 1;
@@ -121,8 +104,8 @@ struct GroupWorkspace
 //! their members; the survivors are then gathered in group order.
 struct MergeWorkspace
 {
-    std::vector<int> taskStart;        //!< the first group of each task, and the count at the end
-    std::vector<GroupWorkspace> tasks;
+    TaskLayout tasks;                  //!< consecutive groups, by their members
+    std::vector<GroupWorkspace> taskWorkspaces;
     std::vector<Vec4f> placed;         //!< the survivors of each group, from its first member's place
     std::vector<int> survivors;        //!< per group
     std::vector<int> outputIndex;      //!< index in the merged output of each place

@@ -13,6 +13,7 @@
 #include "opencv2/lsd_advance/lsd_advance.hpp"
 #include "fast_lsd.hpp"
 #include "opencv_lsd.hpp"
+#include "primitives.hpp"
 #include <algorithm>
 #include <vector>
 
@@ -256,9 +257,8 @@ struct GroupingWorkspace
     std::vector<int> filedSegment;
     std::vector<int> queuedFrom, queuedTo;  //!< a batch of comparisons (filed positions) ...
     std::vector<Vec2i> pairs;         //!< ... and of adjacent segments
-    std::vector<int> parent;          //!< union-find forest over the segments
+    UnionFind sets;                   //!< the segments adjacent through their endpoints
     std::vector<int> groupOf;
-    std::vector<int> fill;
 };
 
 //! Groups in O(n) expected time (a grid of endpoints, dense or hashed, union-find). The parameters are in
