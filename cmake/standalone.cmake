@@ -19,6 +19,8 @@
 #   LSD_ADVANCE_SANITIZE=<list>  build the module's targets (library, tests, samples, apps; not ts) with
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
+#   LSD_ADVANCE_SCALAR=ON  compile the module's universal-intrinsics paths out (src/primitives.hpp):
+#                          every `#if CV_SIMD128` takes its scalar `#else` (scripts/check_scalar.sh)
 #   LSD_ADVANCE_TEST_FILES=<list>  the test/*.cpp files (names) opencv_test_lsd_advance is built from;
 #                          empty (the default): all of them. scripts/sanitizers.sh builds the
 #                          ThreadSanitizer run from the threaded tests' files only.
@@ -46,6 +48,7 @@ option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
 option(BUILD_APPS "Build the benchmark apps apps/lsd_advance_bench/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
 set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
+option(LSD_ADVANCE_SCALAR "Compile the module's vector paths out: the scalar paths only" OFF)
 set(LSD_ADVANCE_TEST_FILES "" CACHE STRING "test/*.cpp files (names) of opencv_test_lsd_advance (empty: all)")
 option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
 set(LSD_ADVANCE_ELSED_DIR "" CACHE PATH "ELSED source folder, built as an optional peer of the apps and perf suite (empty: none)")
@@ -109,6 +112,11 @@ if(LSD_ADVANCE_WERROR)
 endif()
 
 set(LSDA_SANITIZE_OPTIONS "")
+if(LSD_ADVANCE_SCALAR)
+  add_compile_definitions(LSD_ADVANCE_SCALAR)
+  message(STATUS "lsd_advance: scalar build (no universal intrinsics)")
+endif()
+
 if(LSD_ADVANCE_SANITIZE)
   # The module's own code (library, tests, samples, apps) is instrumented; OpenCV's ts, like the
   # installed OpenCV itself, is not: it only needs to link with the sanitizer runtime.

@@ -4,10 +4,10 @@
 
 // Stage 0, the base detectors: OpenCV's LSD (from imgproc or ximgproc, opencv_lsd.hpp),
 // FastLineDetector and EDLines (EdgeDrawing), used as they are, and the module's own LSD
-// (fast_lsd.cpp).
+// (fast_lsd/fast_lsd.cpp).
 
 #include "precomp.hpp"
-#include "fast_lsd.hpp"
+#include "fast_lsd/fast_lsd.hpp"
 #include "opencv2/ximgproc/edge_drawing.hpp"
 #include "opencv2/ximgproc/fast_line_detector.hpp"
 

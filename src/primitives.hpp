@@ -15,6 +15,19 @@
 #include <algorithm>
 #include <vector>
 
+// LSD_ADVANCE_SCALAR (CMake option of the same name; scripts/check_scalar.sh, run by CI): the
+// module's universal-intrinsics paths compiled out, every `#if CV_SIMD128` taking its scalar
+// `#else`, as on a platform without them. Debian's OpenCV headers set CV_SIMD128 from the
+// compiler's target (__SSE2__, always there on x86-64), whatever CV_DISABLE_OPTIMIZATION says:
+// the switch is made here, after them, and every source file of the module sees it first (through
+// precomp.hpp, or stages.hpp for the tests).
+#ifdef LSD_ADVANCE_SCALAR
+#undef CV_SIMD128
+#define CV_SIMD128 0
+#undef CV_SIMD128_64F
+#define CV_SIMD128_64F 0
+#endif
+
 namespace cv {
 namespace ximgproc {
 namespace lsda {
@@ -81,6 +94,9 @@ private:
     int itemCount = 0, evenSize = 1;
     std::vector<int> start;  //!< the first item of each task, and the count at the end (byWeight)
 };
+
+//! Whether the module's vector paths were compiled (CV_SIMD128; false in the LSD_ADVANCE_SCALAR build).
+CV_EXPORTS bool compiledWithUniversalIntrinsics();
 
 //! Rows of an image per task of a pass over its rows (the gradient, the smoothing at scale 1): a
 //! row is a few microseconds of work.

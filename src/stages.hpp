@@ -5,13 +5,13 @@
 // Internal interface of the LSDAdvance pipeline: one file per stage, plain data in and out, each
 // stage with the parameters it reads only, so that each can be tested alone. This is the only
 // internal header the tests include: the CV_EXPORTS functions below, which the module's tests call
-// directly, and through fast_lsd.hpp the class of BASE_FAST_LSD, whose tiles they check.
+// directly, and through fast_lsd/fast_lsd.hpp the class of BASE_FAST_LSD, whose tiles they check.
 
 #ifndef OPENCV_LSD_ADVANCE_STAGES_HPP
 #define OPENCV_LSD_ADVANCE_STAGES_HPP
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
-#include "fast_lsd.hpp"
+#include "fast_lsd/fast_lsd.hpp"
 #include "opencv_lsd.hpp"
 #include "primitives.hpp"
 #include <algorithm>
