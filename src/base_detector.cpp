@@ -108,13 +108,6 @@ private:
 
 } // namespace
 
-void BaseSegmentDetector::detectOnMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments)
-{
-    detectReadingMask(gray, mask, segments);
-    if (!mask.empty())
-        cutAtMask(mask, segments, pieces);
-}
-
 Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
                                             const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines)
 {

@@ -2,8 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Provenance: the base segments each returned line is made of (LSDAdvance::getLastSources),
-// followed through the stages of a call.
+// The stage trace: the base segments each returned line is made of (LSDAdvance::getLastSources)
+// and the responses known so far, followed through the stages of a call.
 
 #include "precomp.hpp"
 
@@ -47,6 +47,32 @@ void SegmentProvenance::sources(int lineCount, OutputArrayOfArrays out) const
         if (count > 0)
             std::copy(order.begin() + rowStart[j], order.begin() + rowStart[j + 1], out.getMat(j).ptr<int>());
     }
+}
+
+void StageTrace::start(const std::vector<Vec4f>& base)
+{
+    provenance.start(base.size());
+    responses.clear();
+}
+
+void StageTrace::followKept(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                            const std::vector<int>& keptFrom)
+{
+    provenance.followKept(keptFrom, in.size());
+    responses.followKept(in, out, keptFrom);
+}
+
+void StageTrace::followMerged(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                              const std::vector<int>& mergedInto)
+{
+    provenance.followMerged(mergedInto);
+    responses.followMerged(in, out, mergedInto);
+}
+
+void StageTrace::followSelected(const std::vector<int>& keptFrom, size_t inputSize)
+{
+    provenance.followKept(keptFrom, inputSize);
+    responses.clear();
 }
 
 }}} // namespace cv::ximgproc::lsda

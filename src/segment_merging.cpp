@@ -622,7 +622,7 @@ void mergeGroup(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                 std::vector<Vec4f>& placed, int& survivors, std::vector<int>& mergedInto)
 {
     const int begin = groups.offsets[g], end = groups.offsets[g + 1];
-    if (end - begin == 1 || params.mergeStrategy == LSDAdvance::MERGE_NONE)
+    if (end - begin == 1)
     {
         for (int k = begin; k < end; k++)
         {
@@ -667,6 +667,7 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
                  const MergingParams& params, std::vector<Vec4f>& merged, std::vector<int>& mergedInto,
                  MergeWorkspace& ws, const Mat& mask)
 {
+    CV_Assert(params.mergeStrategy != LSDAdvance::MERGE_NONE);
     merged.clear();
     merged.reserve(segments.size());
     mergedInto.assign(segments.size(), -1);
@@ -700,6 +701,41 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
     MergeWorkspace workspace;
     std::vector<int> mergedInto;
     mergeGroups(segments, groups, params, merged, mergedInto, workspace, mask);
+}
+
+MergeStage::MergeStage() : mergingBuffers(makePtr<MergeWorkspace>()) {}
+
+MergeStage::~MergeStage() = default;
+
+void MergeStage::apply(const std::vector<Vec4f>& in, const GroupingParams& grouping, const MergingParams& merging,
+                       const Mat& mask, std::vector<Vec4f>& merged, LSDAdvanceStats& stats)
+{
+    isGrouped = merging.mergeStrategy != LSDAdvance::MERGE_NONE;
+    if (!isGrouped)
+    {
+        merged = in;
+        into.resize(in.size());
+        for (size_t i = 0; i < in.size(); i++)
+            into[i] = (int)i;
+        stats.mergedSegments = (int)in.size();
+        return;
+    }
+    int64 t = getTickCount();
+    groupSegments(in, grouping, segmentGroups, groupingBuffers);
+    stats.mergeGroups = mergeGroupCount(segmentGroups);
+    stats.groupingMs = elapsedMs(t);
+    t = getTickCount();
+    mergeGroups(in, segmentGroups, merging, merged, into, *mergingBuffers, mask);
+    stats.mergedSegments = (int)merged.size();
+    stats.mergingMs = elapsedMs(t);
+}
+
+void MergeStage::labels(std::vector<int>& groupLabels) const
+{
+    if (isGrouped)
+        lsda::groupLabels(segmentGroups, groupLabels);
+    else
+        groupLabels.clear();
 }
 
 }}} // namespace cv::ximgproc::lsda

@@ -326,12 +326,28 @@ TEST(LSDAdvance_Similarity, a_point_has_no_direction)
     EXPECT_EQ(0.0, lsda::similarityTerms(Vec4f(5, 5, 5, 5), Vec4f(0, 0, 100, 0), 0.1).direction);
 }
 
+// MERGE_NONE is decided by stages 2 and 3 together (MergeStage): no groups, nothing fused.
 TEST(LSDAdvance_MergingNone, returns_every_segment_unchanged)
 {
     lsda::MergingParams params;
     params.mergeStrategy = LSDAdvance::MERGE_NONE;
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 202, 0), Vec4f(204, 0, 230, 0) };
-    EXPECT_EQ(segments, groupAndMerge(segments, params));
+    lsda::MergeStage stage;
+    std::vector<Vec4f> merged;
+    LSDAdvanceStats stats;
+    stage.apply(segments, lsda::GroupingParams(), params, Mat(), merged, stats);
+    EXPECT_EQ(segments, merged);
+    EXPECT_EQ(std::vector<int>({ 0, 1, 2 }), stage.mergedInto());
+    std::vector<int> labels(1, 7);
+    stage.labels(labels);
+    EXPECT_TRUE(labels.empty());
+    EXPECT_EQ(0, stats.mergeGroups);
+    EXPECT_EQ(3, stats.mergedSegments);
+    params.mergeStrategy = LSDAdvance::MERGE_LONGEST_FIRST;
+    stage.apply(segments, lsda::GroupingParams(), params, Mat(), merged, stats);
+    EXPECT_EQ(1u, merged.size());
+    stage.labels(labels);
+    EXPECT_EQ(std::vector<int>({ 0, 0, 0 }), labels);
 }
 
 }} // namespace
