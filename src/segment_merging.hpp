@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Stage 3's pruning machinery: the projection sweep that keeps merging near-linear, and the
-// buffers merging reuses from group to group and from task to task. Internal to segment_merging.cpp, the
+// buffers merging reuses from group to group and from task to task. Internal to segment_merging.cpp and
+// projection_sweep.cpp (the sweep), the
 // implementation class (which owns a workspace) and the tests of the sweep.
 
 #ifndef OPENCV_LSD_ADVANCE_SEGMENT_MERGING_HPP
@@ -14,6 +15,12 @@
 namespace cv {
 namespace ximgproc {
 namespace lsda {
+
+//! Rounding slack of the merging's pruning bounds: they may only ever let more pairs through.
+inline double withSlack(double distance)
+{
+    return distance + 1e-9 * std::abs(distance) + 1e-6;
+}
 
 //! The segments of one group that may still fuse, filed by the start of their projection on a
 //! fixed direction, in lanes across it (by the position of their midpoint along the normal),
