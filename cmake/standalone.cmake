@@ -253,9 +253,9 @@ if(BUILD_TESTS)
 
   # The layout of an OpenCV whose LineSegmentDetector has moved from imgproc to ximgproc
   # (opencv#29349, opencv_contrib#4158): the module's sources and a BASE_LSD test compiled against
-  # the header layer compat/lsd_in_ximgproc/include, which hides imgproc's LSD and declares
+  # the header layer test/compat/lsd_in_ximgproc/include, which hides imgproc's LSD and declares
   # ximgproc's, forwarded to the installed implementation by a library compiled without the layer.
-  set(_compat "${LSDA_ROOT}/compat/lsd_in_ximgproc")
+  set(_compat "${LSDA_ROOT}/test/compat/lsd_in_ximgproc")
   add_library(lsda_lsd_in_ximgproc_forward STATIC "${_compat}/line_segment_detector.cpp")
   target_include_directories(lsda_lsd_in_ximgproc_forward PRIVATE ${OpenCV_INCLUDE_DIRS})
   target_link_libraries(lsda_lsd_in_ximgproc_forward PUBLIC opencv_core opencv_imgproc)
