@@ -83,17 +83,6 @@ Mat clutterImage(uint64 seed)
     return img;
 }
 
-TEST(LSDAdvance_Detect, blank_image_gives_no_lines)
-{
-    Ptr<LSDAdvance> detector = createLSDAdvance();
-    const std::vector<Vec4f> lines = detectLines(detector, Mat(240, 320, CV_8UC1, Scalar(128)));
-    EXPECT_TRUE(lines.empty());
-    const LSDAdvanceStats stats = detector->getLastStats();
-    EXPECT_EQ(0, stats.baseSegments);
-    EXPECT_EQ(0, stats.outputSegments);
-    EXPECT_EQ(0.0, stats.minLength);
-}
-
 TEST(LSDAdvance_Detect, output_is_Nx1_CV_32FC4)
 {
     Mat lines;
