@@ -253,14 +253,15 @@ if(BUILD_TESTS)
 
   # The layout of an OpenCV whose LineSegmentDetector has moved from imgproc to ximgproc
   # (opencv#29349, opencv_contrib#4158): the module's sources and a BASE_LSD test compiled against
-  # the header layer test/compat/lsd_in_ximgproc/include, which hides imgproc's LSD and declares
+  # the header layer test/compat/lsd_in_ximgproc/include (its sources .cxx: OpenCV's in-tree build
+  # globs test/**/*.cpp into the module's tests), which hides imgproc's LSD and declares
   # ximgproc's, forwarded to the installed implementation by a library compiled without the layer.
   set(_compat "${LSDA_ROOT}/test/compat/lsd_in_ximgproc")
-  add_library(lsda_lsd_in_ximgproc_forward STATIC "${_compat}/line_segment_detector.cpp")
+  add_library(lsda_lsd_in_ximgproc_forward STATIC "${_compat}/line_segment_detector.cxx")
   target_include_directories(lsda_lsd_in_ximgproc_forward PRIVATE ${OpenCV_INCLUDE_DIRS})
   target_link_libraries(lsda_lsd_in_ximgproc_forward PUBLIC opencv_core opencv_imgproc)
   set(_target opencv_test_lsd_advance_lsd_in_ximgproc)
-  add_executable(${_target} ${LSDA_SOURCES} "${_compat}/test_lsd_in_ximgproc.cpp")
+  add_executable(${_target} ${LSDA_SOURCES} "${_compat}/test_lsd_in_ximgproc.cxx")
   target_include_directories(${_target} BEFORE PRIVATE "${_compat}/include" "${LSDA_ROOT}/include" "${LSDA_ROOT}/src"
     ${OpenCV_INCLUDE_DIRS})
   target_compile_definitions(${_target} PRIVATE ${LSDA_MODULE_DEFINITIONS})
