@@ -93,7 +93,7 @@ build_tests "$TSAN_BUILD" thread "test_main.cpp;thread_sanitizer_backend.cpp;tes
 # Exit (code 66) at the first report: an abort there hangs in ThreadSanitizer's own handler.
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$REPO/scripts/tsan_suppressions.txt:print_suppressions=1"
 section "threaded unit tests under TSan"
-run_tests "$TSAN_BUILD" "${GTEST_FILTER:-LSDAdvance_FastLsd.*:LSDAdvance_Determinism.*:LSDAdvance_Concurrency.*:LSDAdvance_LBD.*thread*}" \
+run_tests "$TSAN_BUILD" "${GTEST_FILTER:-LSDAdvance_FastLsd.*:LSDAdvance_FastLsdOracle.*:LSDAdvance_Determinism.*:LSDAdvance_Concurrency.*:LSDAdvance_LBD.*thread*}" \
   "$TSAN_BUILD/opencv_test_lsd_advance.tsan.log" 'WARNING: ThreadSanitizer|ERROR: ThreadSanitizer'
 
 section "done"

@@ -17,9 +17,6 @@ namespace lsda {
 
 namespace {
 
-// Rows of the image smoothed by one task of the parallel loop.
-constexpr int kRowsPerStripe = 16;
-
 // Weights in 8-bit fixed point: each pass's sum to this.
 constexpr int kWeightSum = 256;
 
@@ -86,35 +83,21 @@ void countEdges(const uchar* a, const uchar* b, const uchar* c, const uchar* d, 
     }
 }
 
-// The edges of the sampled rows of a range of stripes: along each row y, and down the columns from
-// it (the steps between rows y + 1 and y + 2, read from rows y to y + 3). Stripe s counts into
-// counts[2 s] and counts[2 s + 1].
-class EdgeRows CV_FINAL : public ParallelLoopBody
+// The edges of the sampled rows of stripe s (rows [s, s + 1) times kRowsPerStripe): along each
+// row y, and down the columns from it (the steps between rows y + 1 and y + 2, read from rows y to
+// y + 3), counted into c[0] and c[1].
+void countStripe(const Mat& image, int s, int64* c)
 {
-public:
-    EdgeRows(const Mat& gray, int rowsPerStripe, int64* stripes) : image(gray), rows(rowsPerStripe), counts(stripes) {}
-    void operator()(const Range& range) const CV_OVERRIDE
+    c[0] = c[1] = 0;
+    const int end = std::min(image.rows, (s + 1) * kRowsPerStripe);
+    for (int y = s * kRowsPerStripe; y < end; y += kSampledRowStep)
     {
-        for (int s = range.start; s < range.end; s++)
-        {
-            int64* c = counts + 2 * s;
-            c[0] = c[1] = 0;
-            const int end = std::min(image.rows, (s + 1) * rows);
-            for (int y = s * rows; y < end; y += kSampledRowStep)
-            {
-                const uchar* row = image.ptr<uchar>(y);
-                countEdges(row, row + 1, row + 2, row + 3, image.cols - 3, c);
-                if (y + 3 < image.rows)
-                    countEdges(row, image.ptr<uchar>(y + 1), image.ptr<uchar>(y + 2), image.ptr<uchar>(y + 3), image.cols, c);
-            }
-        }
+        const uchar* row = image.ptr<uchar>(y);
+        countEdges(row, row + 1, row + 2, row + 3, image.cols - 3, c);
+        if (y + 3 < image.rows)
+            countEdges(row, image.ptr<uchar>(y + 1), image.ptr<uchar>(y + 2), image.ptr<uchar>(y + 3), image.cols, c);
     }
-
-private:
-    const Mat& image;
-    int rows;
-    int64* counts;
-};
+}
 
 // out[x] = (w[0] centre[x] + sum over k of w[k] (before[k - 1][x] + after[k - 1][x]) + 128) / 256
 // for x in [0, n): one pass of the Gaussian, 16 pixels at a time in 16 bits (at most 255 * 256).
@@ -184,7 +167,12 @@ bool hasAliasedEdges(const Mat& gray, std::vector<int64>& counts)
     CV_CheckTypeEQ(gray.type(), CV_8UC1, "hasAliasedEdges: the image must be CV_8UC1");
     const int stripeCount = (gray.rows + kRowsPerStripe - 1) / kRowsPerStripe;
     counts.resize(2 * (size_t)stripeCount);
-    parallel_for_(Range(0, stripeCount), EdgeRows(gray, kRowsPerStripe, counts.data()), stripeCount);
+    TaskLayout stripes;
+    stripes.evenly(stripeCount, 1);
+    runTasks(stripes, [&](int, const Range& items) {
+        for (int s = items.start; s < items.end; s++)
+            countStripe(gray, s, &counts[2 * (size_t)s]);
+    });
     int64 edges = 0, onePixel = 0;
     for (int s = 0; s < stripeCount; s++)
     {
@@ -266,7 +254,10 @@ const Mat& FullScaleSmoothing::apply(const Mat& gray)
     vertical.resize((size_t)(gray.cols + 2 * radius) * gray.rows);
     pixels.resize(gray.total());
     smoothed = Mat(gray.rows, gray.cols, CV_8UC1, pixels.data());
-    parallel_for_(Range(0, gray.rows), SmoothedRows(*this, gray), std::max(1.0, gray.rows / (double)kRowsPerStripe));
+    TaskLayout stripes;
+    stripes.evenly(gray.rows, kImageRowsPerTask);
+    const SmoothedRows smoothedRows(*this, gray);
+    runTasks(stripes, [&](int, const Range& rows) { smoothedRows(rows); });
     return smoothed;
 }
 

@@ -269,7 +269,7 @@ TEST(LSDAdvance_AliasedEdges, the_pre_smoothing_misses_fewer_edges_of_shapes_dra
 }
 
 // BASE_LSD is OpenCV's LSD on FullScaleSmoothing's image (BASE_FAST_LSD, its oracle test:
-// LSDAdvance_FastLsd.reproduces_OpenCV_LSD_after_the_pre_smoothing_both_ways).
+// LSDAdvance_FastLsdOracle.reproduces_OpenCV_LSD_both_ways/pre_smoothing).
 TEST(LSDAdvance_AliasedEdges, BASE_LSD_reads_the_smoothed_image)
 {
     LSDAdvance::LSDParams p;
