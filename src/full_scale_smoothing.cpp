@@ -83,14 +83,14 @@ void countEdges(const uchar* a, const uchar* b, const uchar* c, const uchar* d, 
     }
 }
 
-// The edges of the sampled rows of stripe s (rows [s, s + 1) times kRowsPerStripe): along each
+// The edges of the sampled rows of stripe s (rows [s, s + 1) times kImageRowsPerTask): along each
 // row y, and down the columns from it (the steps between rows y + 1 and y + 2, read from rows y to
 // y + 3), counted into c[0] and c[1].
 void countStripe(const Mat& image, int s, int64* c)
 {
     c[0] = c[1] = 0;
-    const int end = std::min(image.rows, (s + 1) * kRowsPerStripe);
-    for (int y = s * kRowsPerStripe; y < end; y += kSampledRowStep)
+    const int end = std::min(image.rows, (s + 1) * kImageRowsPerTask);
+    for (int y = s * kImageRowsPerTask; y < end; y += kSampledRowStep)
     {
         const uchar* row = image.ptr<uchar>(y);
         countEdges(row, row + 1, row + 2, row + 3, image.cols - 3, c);
@@ -165,7 +165,7 @@ void weightedSum(const uchar* centre, const uchar* const* before, const uchar* c
 bool hasAliasedEdges(const Mat& gray, std::vector<int64>& counts)
 {
     CV_CheckTypeEQ(gray.type(), CV_8UC1, "hasAliasedEdges: the image must be CV_8UC1");
-    const int stripeCount = (gray.rows + kRowsPerStripe - 1) / kRowsPerStripe;
+    const int stripeCount = (gray.rows + kImageRowsPerTask - 1) / kImageRowsPerTask;
     counts.resize(2 * (size_t)stripeCount);
     TaskLayout stripes;
     stripes.evenly(stripeCount, 1);

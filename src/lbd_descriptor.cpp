@@ -140,7 +140,7 @@ struct Workspace
     std::vector<uchar> tiles;        //!< per tile: whether a region reaches it
     std::vector<GradientChunk> chunks;
     std::vector<LineRegion> regions;
-    std::vector<int> taskStart;      //!< the first line of each task of the sampling
+    TaskLayout gradientTasks, lineTasks;  //!< a chunk per task; lines of kSamplesPerTask samples or more per task
 };
 
 Workspace& threadWorkspace()
@@ -641,57 +641,20 @@ LineRegion regionOf(const KeyLine& kl, int i, Size size)
     return r;
 }
 
-class GradientChunks : public ParallelLoopBody
+// Row i of out, 72 floats or (binary) 32 bytes, the description of line i.
+void describeLine(const Workspace& ws, int i, Size size, RowSums& sums, Mat& out, bool binary)
 {
-public:
-    GradientChunks(const Mat& gray_, const std::vector<GradientChunk>& chunks_, uint32_t* gradient_)
-        : gray(gray_), chunks(chunks_), gradient(gradient_)
-    {}
-    void operator()(const Range& range) const CV_OVERRIDE
+    float features[kFloatsPerLine];
+    sampleRegion(ws.regions[i], ws.gradient.data(), size, sums);
+    uchar* row = out.ptr(i);
+    if (!binary)
+        describeRegion(sums, (float*)row);
+    else
     {
-        for (int k = range.start; k < range.end; k++)
-            computeGradientChunk(gray, chunks[k], gradient);
+        describeRegion(sums, features);
+        binarise(features, row);
     }
-
-private:
-    const Mat& gray;
-    const std::vector<GradientChunk>& chunks;
-    uint32_t* gradient;
-};
-
-// The lines of the tasks of a range: row i of out, 72 floats or (binary) 32 bytes, per line i.
-class LineDescriptions : public ParallelLoopBody
-{
-public:
-    LineDescriptions(const Workspace& ws_, Size size_, Mat& out, bool binary_)
-        : ws(ws_), size(size_), rows(out.data), step(out.step[0]), binary(binary_)
-    {}
-    void operator()(const Range& range) const CV_OVERRIDE
-    {
-        RowSums sums;
-        float features[kFloatsPerLine];
-        for (int t = range.start; t < range.end; t++)
-            for (int i = ws.taskStart[t]; i < ws.taskStart[t + 1]; i++)
-            {
-                sampleRegion(ws.regions[i], ws.gradient.data(), size, sums);
-                uchar* row = rows + step * i;
-                if (!binary)
-                    describeRegion(sums, (float*)row);
-                else
-                {
-                    describeRegion(sums, features);
-                    binarise(features, row);
-                }
-            }
-    }
-
-private:
-    const Workspace& ws;
-    Size size;
-    uchar* rows;
-    size_t step;
-    bool binary;
-};
+}
 
 // Checks the input, computes the gradient under the regions of the KeyLines and describes them
 // into an N x 32 CV_8U (binary) or N x 72 CV_32F array.
@@ -711,26 +674,22 @@ void describeKeyLines(InputArray image, const std::vector<KeyLine>& keylines, Ou
     layChunks(ws.tiles, size, tilesX, ws.chunks);
     if (ws.gradient.size() < gray.total())
         ws.gradient.resize(gray.total());
-    parallel_for_(Range(0, (int)ws.chunks.size()), GradientChunks(gray, ws.chunks, ws.gradient.data()),
-                  (double)ws.chunks.size());
+    ws.gradientTasks.evenly((int)ws.chunks.size(), 1);
+    runTasks(ws.gradientTasks, [&](int, const Range& chunks) {
+        for (int k = chunks.start; k < chunks.end; k++)
+            computeGradientChunk(gray, ws.chunks[k], ws.gradient.data());
+    });
 
     // Tasks of consecutive lines of at least kSamplesPerTask samples, laid out from the lines alone.
-    ws.taskStart.clear();
-    long long samples = kSamplesPerTask;
-    for (size_t i = 0; i < ws.regions.size(); i++)
-    {
-        if (samples >= kSamplesPerTask)
-        {
-            ws.taskStart.push_back((int)i);
-            samples = 0;
-        }
-        samples += (long long)ws.regions[i].length * kSampledRows;
-    }
-    ws.taskStart.push_back((int)ws.regions.size());
-    const int tasks = (int)ws.taskStart.size() - 1;
+    ws.lineTasks.byWeight((int)ws.regions.size(), kSamplesPerTask,
+                          [&ws](int i) { return ws.regions[i].length * kSampledRows; });
     descriptors.create((int)keylines.size(), binary ? kDescriptorBytes : kFloatsPerLine, binary ? CV_8U : CV_32F);
     Mat out = descriptors.getMat();
-    parallel_for_(Range(0, tasks), LineDescriptions(ws, size, out, binary), (double)tasks);
+    runTasks(ws.lineTasks, [&](int, const Range& lines) {
+        RowSums sums;
+        for (int i = lines.start; i < lines.end; i++)
+            describeLine(ws, i, size, sums, out, binary);
+    });
 }
 
 } // namespace

@@ -51,6 +51,7 @@ void* __libc_malloc(size_t size);
 void* __libc_calloc(size_t count, size_t size);
 void* __libc_realloc(void* p, size_t size);
 void* __libc_memalign(size_t alignment, size_t size);
+void* memalign(size_t alignment, size_t size);  // <malloc.h>'s, not <stdlib.h>'s
 
 void* malloc(size_t size)
 {
