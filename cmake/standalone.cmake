@@ -19,6 +19,8 @@
 #   LSD_ADVANCE_SANITIZE=<list>  build the module's targets (library, tests, samples, apps; not ts) with
 #                          -fsanitize=<list>, e.g. address,undefined (scripts/sanitizers.sh);
 #                          reports are fatal (-fno-sanitize-recover=all)
+#   LSD_ADVANCE_SCALAR=ON  compile the module's universal-intrinsics paths out (src/primitives.hpp):
+#                          every `#if CV_SIMD128` takes its scalar `#else` (scripts/check_scalar.sh)
 #   LSD_ADVANCE_TEST_FILES=<list>  the test/*.cpp files (names) opencv_test_lsd_advance is built from;
 #                          empty (the default): all of them. scripts/sanitizers.sh builds the
 #                          ThreadSanitizer run from the threaded tests' files only.
@@ -46,6 +48,7 @@ option(BUILD_EXAMPLES "Build samples/*.cpp as executables" ON)
 option(BUILD_APPS "Build the benchmark apps apps/lsd_advance_bench/*.cpp as executables" ON)
 option(LSD_ADVANCE_WERROR "Treat compiler warnings as errors in the module's targets" OFF)
 set(LSD_ADVANCE_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
+option(LSD_ADVANCE_SCALAR "Compile the module's vector paths out: the scalar paths only" OFF)
 set(LSD_ADVANCE_TEST_FILES "" CACHE STRING "test/*.cpp files (names) of opencv_test_lsd_advance (empty: all)")
 option(LSD_ADVANCE_FUZZ "Build the libFuzzer target lsd_advance_fuzz (needs clang)" OFF)
 set(LSD_ADVANCE_ELSED_DIR "" CACHE PATH "ELSED source folder, built as an optional peer of the apps and perf suite (empty: none)")
@@ -113,6 +116,11 @@ if(LSD_ADVANCE_WERROR)
 endif()
 
 set(LSDA_SANITIZE_OPTIONS "")
+if(LSD_ADVANCE_SCALAR)
+  add_compile_definitions(LSD_ADVANCE_SCALAR)
+  message(STATUS "lsd_advance: scalar build (no universal intrinsics)")
+endif()
+
 if(LSD_ADVANCE_SANITIZE)
   # The module's own code (library, tests, samples, apps) is instrumented; OpenCV's ts, like the
   # installed OpenCV itself, is not: it only needs to link with the sanitizer runtime.
@@ -124,8 +132,9 @@ endif()
 # ---------------------------------------------------------------------------------------------
 # The library: shared, hidden visibility and CVAPI_EXPORTS exactly like an OpenCV module, so a
 # missing CV_EXPORTS fails here as it would in-tree.
-file(GLOB LSDA_SOURCES CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.cpp")
-file(GLOB LSDA_INTERNAL_HEADERS CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.hpp" "${LSDA_ROOT}/src/*.h")
+# src/ and its folders (src/fast_lsd/), as OpenCV's module build globs them.
+file(GLOB_RECURSE LSDA_SOURCES CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.cpp")
+file(GLOB_RECURSE LSDA_INTERNAL_HEADERS CONFIGURE_DEPENDS "${LSDA_ROOT}/src/*.hpp" "${LSDA_ROOT}/src/*.h")
 file(GLOB LSDA_PUBLIC_HEADERS CONFIGURE_DEPENDS
   "${LSDA_ROOT}/include/opencv2/lsd_advance.hpp"
   "${LSDA_ROOT}/include/opencv2/lsd_advance/*.hpp"
@@ -248,14 +257,15 @@ if(BUILD_TESTS)
 
   # The layout of an OpenCV whose LineSegmentDetector has moved from imgproc to ximgproc
   # (opencv#29349, opencv_contrib#4158): the module's sources and a BASE_LSD test compiled against
-  # the header layer compat/lsd_in_ximgproc/include, which hides imgproc's LSD and declares
+  # the header layer test/compat/lsd_in_ximgproc/include (its sources .cxx: OpenCV's in-tree build
+  # globs test/**/*.cpp into the module's tests), which hides imgproc's LSD and declares
   # ximgproc's, forwarded to the installed implementation by a library compiled without the layer.
-  set(_compat "${LSDA_ROOT}/compat/lsd_in_ximgproc")
-  add_library(lsda_lsd_in_ximgproc_forward STATIC "${_compat}/line_segment_detector.cpp")
+  set(_compat "${LSDA_ROOT}/test/compat/lsd_in_ximgproc")
+  add_library(lsda_lsd_in_ximgproc_forward STATIC "${_compat}/line_segment_detector.cxx")
   target_include_directories(lsda_lsd_in_ximgproc_forward PRIVATE ${OpenCV_INCLUDE_DIRS})
   target_link_libraries(lsda_lsd_in_ximgproc_forward PUBLIC opencv_core opencv_imgproc)
   set(_target opencv_test_lsd_advance_lsd_in_ximgproc)
-  add_executable(${_target} ${LSDA_SOURCES} "${_compat}/test_lsd_in_ximgproc.cpp")
+  add_executable(${_target} ${LSDA_SOURCES} "${_compat}/test_lsd_in_ximgproc.cxx")
   target_include_directories(${_target} BEFORE PRIVATE "${_compat}/include" "${LSDA_ROOT}/include" "${LSDA_ROOT}/src"
     ${OpenCV_INCLUDE_DIRS})
   target_compile_definitions(${_target} PRIVATE ${LSDA_MODULE_DEFINITIONS})

@@ -4,17 +4,24 @@
 
 // libFuzzer target: arbitrary bytes -> an image of arbitrary size, type and layout, a parameter
 // set (through read(), so that every persisted parameter takes part, with bad values too), a few
-// frames of detect() (every output overload), processSegments() on arbitrary floats, and the
-// evaluation API. Bad input may only throw cv::Exception; anything else (another exception, a
-// crash, a sanitizer report, a broken output invariant) aborts and is a finding.
+// frames of detect() (every output overload; the KeyLines described by computeLBD),
+// processSegments() on arbitrary floats, computeLBD on arbitrary KeyLines, and the evaluation API.
+// Bad input may only throw cv::Exception; anything else (another exception, a crash, a sanitizer
+// report, a broken output invariant, computeLBD's descriptors other than line_descriptor's
+// BinaryDescriptor::compute's) aborts and is a finding.
 // Build and run: scripts/fuzz.sh.
 
 #include "opencv2/lsd_advance.hpp"
 #include "opencv2/lsd_advance/evaluation.hpp"
 #include "opencv2/imgproc.hpp"
 
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+#include "opencv2/line_descriptor.hpp"
+#endif
+
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -190,6 +197,93 @@ void checkLines(const std::vector<Vec4f>& lines, const Size& image, const LSDAdv
     }
 }
 
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+// computeLBD of accepted input: the descriptors of line_descriptor's BinaryDescriptor::compute.
+void checkDescriptors(const Mat& image, const std::vector<line_descriptor::KeyLine>& keylines)
+{
+    Mat descriptors;
+    computeLBD(image, keylines, descriptors);
+    if (descriptors.rows != (int)keylines.size() || descriptors.cols != 32 || descriptors.type() != CV_8UC1)
+        fail("computeLBD gives N x 32 CV_8U", descriptors.rows);
+    if (keylines.empty())
+        return;
+    std::vector<line_descriptor::KeyLine> numbered = keylines;  // one class_id per KeyLine
+    for (size_t i = 0; i < numbered.size(); i++)
+        numbered[i].class_id = (int)i;
+    Mat expected;
+    line_descriptor::BinaryDescriptor::createBinaryDescriptor()->compute(image, numbered, expected);
+    if (norm(descriptors, expected, NORM_HAMMING) != 0)
+        fail("computeLBD's descriptors are BinaryDescriptor::compute's", norm(descriptors, expected, NORM_HAMMING));
+}
+
+// computeLBD on KeyLines of fuzzed fields: valid ones (KeyLines of segments in and around the
+// image) and broken ones (another octave, non-finite, outside, of zero length, a support length
+// out of range, octave copies elsewhere). Exactly the broken ones and images of another type throw.
+void fuzzLbd(FuzzedDataProvider& in)
+{
+    const Mat image = fuzzedImage(in);
+    const Size size = image.size();
+    const int type = image.type();
+    bool valid = !image.empty() && (type == CV_8UC1 || type == CV_8UC3 || type == CV_8UC4);
+    std::vector<line_descriptor::KeyLine> keylines;
+    for (size_t k = in.ConsumeIntegralInRange<size_t>(0, 12); k > 0 && !size.empty(); k--)
+    {
+        const auto coordinate = [&](int side) { return in.ConsumeFloatingPointInRange<float>(-1.f, (float)side); };
+        const Vec4f s(coordinate(size.width), coordinate(size.height), coordinate(size.width), coordinate(size.height));
+        std::vector<line_descriptor::KeyLine> one;
+        linesToKeyLines(std::vector<Vec4f>(1, s), size, one);
+        line_descriptor::KeyLine kl = one[0];
+        kl.startPointX = kl.sPointInOctaveX = s[0];  // the accepted box: [-1, W] x [-1, H]
+        kl.startPointY = kl.sPointInOctaveY = s[1];
+        const float special[] = { std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                                  -1.5f, (float)size.width + 1.5f, 1e9f };
+        const float bad = special[in.ConsumeIntegralInRange<int>(0, 4)];
+        switch (in.ConsumeIntegralInRange<int>(0, 15))
+        {
+        case 0: kl.octave = in.ConsumeIntegralInRange<int>(1, 5); break;
+        case 1: kl.endPointX = kl.ePointInOctaveX = bad; break;
+        case 2: kl.startPointY = kl.sPointInOctaveY = bad; break;
+        case 3: kl.angle = in.ConsumeBool() ? special[in.ConsumeIntegralInRange<int>(0, 1)] : in.ConsumeFloatingPoint<float>(); break;
+        case 4: kl.numOfPixels = in.ConsumeBool() ? in.ConsumeIntegralInRange<int>(-5, 0) : in.ConsumeIntegral<int>(); break;
+        case 5:
+            kl.endPointX = kl.ePointInOctaveX = kl.startPointX;
+            kl.endPointY = kl.ePointInOctaveY = kl.startPointY;
+            break;
+        case 6: kl.sPointInOctaveX += 1.f; break;
+        case 7: kl.numOfPixels = in.ConsumeIntegralInRange<int>(1, 2048); break;
+        case 8: kl.angle = in.ConsumeFloatingPointInRange<float>(-10.f, 10.f); break;
+        default: break;
+        }
+        const float fields[] = { kl.startPointX, kl.startPointY, kl.endPointX, kl.endPointY, kl.angle };
+        bool ok = kl.octave == 0 && kl.numOfPixels >= 1 && kl.numOfPixels <= 32767 &&
+                  kl.sPointInOctaveX == kl.startPointX && kl.sPointInOctaveY == kl.startPointY &&
+                  kl.ePointInOctaveX == kl.endPointX && kl.ePointInOctaveY == kl.endPointY &&
+                  !(kl.startPointX == kl.endPointX && kl.startPointY == kl.endPointY);
+        for (int i = 0; i < 5; i++)
+            ok = ok && std::isfinite(fields[i]) &&
+                 (i == 4 || (fields[i] >= -1.f && fields[i] <= (float)(i % 2 == 0 ? size.width : size.height)));
+        valid = valid && ok;
+        keylines.push_back(kl);
+    }
+    try
+    {
+        if (valid)
+            checkDescriptors(image, keylines);
+        else
+        {
+            Mat descriptors;
+            computeLBD(image, keylines, descriptors);
+            fail("computeLBD accepted a bad image or KeyLine");
+        }
+    }
+    catch (const cv::Exception&)
+    {
+        if (valid)
+            fail("computeLBD rejected valid input", (double)keylines.size());
+    }
+}
+#endif
+
 void fuzzDetector(FuzzedDataProvider& in)
 {
     Ptr<LSDAdvance> detector = createLSDAdvance();
@@ -237,6 +331,13 @@ void fuzzDetector(FuzzedDataProvider& in)
                 detector->detect(image, keylines, mask);
                 for (const line_descriptor::KeyLine& k : keylines)
                     lines.push_back(Vec4f(k.startPointX, k.startPointY, k.endPointX, k.endPointY));
+                // The detector's KeyLines are computeLBD's to describe, but for a segment that
+                // the clamping made a point.
+                keylines.erase(std::remove_if(keylines.begin(), keylines.end(), [](const line_descriptor::KeyLine& k) {
+                                   return k.startPointX == k.endPointX && k.startPointY == k.endPointY;
+                               }),
+                               keylines.end());
+                checkDescriptors(image, keylines);
 #else
                 detector->detect(image, lines, mask);
 #endif
@@ -354,6 +455,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     FuzzedDataProvider in(data, size);
     if (in.ConsumeBool())
         fuzzEvaluation(in);
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+    if (in.ConsumeIntegralInRange<int>(0, 3) == 0)
+    {
+        fuzzLbd(in);
+        return 0;
+    }
+#endif
     fuzzDetector(in);
     return 0;
 }

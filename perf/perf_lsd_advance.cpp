@@ -9,7 +9,6 @@
 // run (perf/perf_ratios.sh).
 
 #include "perf_precomp.hpp"
-#include "opencv2/core/utils/filesystem.hpp"
 #include "../apps/lsd_advance_bench/line_methods.hpp"
 
 namespace opencv_test { namespace {
@@ -30,24 +29,6 @@ PERF_TEST_P(LineDetection_Image, detect,
 {
     const Mat image = imread(samples::findFile(get<0>(GetParam())), IMREAD_GRAYSCALE);
     MEASURE_DETECTION(image, get<1>(GetParam()));
-}
-
-// An image of the evaluation data (LSD_ADVANCE_DATA_DIR): skipped without it, except under
-// CI=true, where it fails.
-Mat evaluationImage(const std::string& relativePath)
-{
-    const char* root = getenv("LSD_ADVANCE_DATA_DIR");
-    const char* ci = getenv("CI");
-    const std::string path = root ? utils::fs::join(root, relativePath) : std::string();
-    if (path.empty() || !utils::fs::exists(path))
-    {
-        if (ci && std::string(ci) == "true")
-            CV_Error_(Error::StsError, ("CI=true and the evaluation image %s is not in LSD_ADVANCE_DATA_DIR ('%s'; "
-                                        "doc/data.md)", relativePath.c_str(), root ? root : ""));
-        throw SkipTestException("needs the evaluation image " + relativePath +
-                                ": LSD_ADVANCE_DATA_DIR is not set or does not hold it (doc/data.md)");
-    }
-    return imread(path, IMREAD_GRAYSCALE);
 }
 
 typedef perf::TestBaseWithParam<tuple<std::string, std::string> > LineDetection_Data;

@@ -13,9 +13,11 @@
 # (doc/matching.md), with all lines and at line budgets of 100, 200 and 400 per image, and the
 # tracks the matches chain into on KITTI and EuRoC; a point-line SLAM front end's figures
 # (PL-VINS's rules: minimum length, a budget of 60 lines, one-way gated LBD matching, tracks) on
-# KITTI and EuRoC (doc/matching.md, "In a SLAM front end"); the pose evaluation (doc/pose.md: the
-# stereo pairs of KITTI and the Strecha fountain's views at full and half size, lines only, points
-# and points + lines, at line budgets of 60, 100, 150 and all) with its summary table; the parameter sweep of
+# KITTI and EuRoC (doc/matching.md, "In a SLAM front end"); computeLBD against line_descriptor's
+# BinaryDescriptor::compute on the same lines at one and two threads; the pose evaluation
+# (doc/pose.md: the stereo pairs of KITTI and the Strecha fountain's views at full and half size,
+# lines only, points and points + lines, at line budgets of 60, 100, 150 and all) with its summary
+# table; the parameter sweep of
 # doc/parameter_sweep.md; the time of the defaults at one and two threads against LSD and ELSED,
 # and the tiles' instructions with the estimate for more threads (scripts/tile_work.py, valgrind;
 # doc/performance.md); the samples on OpenCV's images. It also writes the YorkUrban charts
@@ -141,6 +143,23 @@ fi
   run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --frontend --methods="$FRONTEND"
   section "A SLAM front end: EuRoC V1_01, still camera, 95 frames (tracks)"
   run "$B" --dataset=sequence --data="$DATA/euroc_v101_static" --frontend --methods="$FRONTEND"
+
+  section "LBD: computeLBD and line_descriptor's BinaryDescriptor::compute on the same lines (doc/matching.md)"
+  echo "Each image's lines as KeyLines, described by the module's \`computeLBD\` and by \`line_descriptor\`'s"
+  echo "\`BinaryDescriptor::compute\` (the same descriptors, checked), three times each, alternating, at"
+  echo "\`--threads=1\` then \`--threads=2\` (\`BinaryDescriptor\` runs on one thread but for OpenCV's own"
+  echo "filters); the last column is the median over images of each image's ratio of the two times."
+  for threads in 1 2; do
+    echo
+    echo "KITTI, 51 frames, the 60 lines of \`PRESET_FRONT_END\`, $threads thread(s):"
+    echo
+    run "$B" --dataset=sequence --data="$DATA/kitti_seq1" --lbd --methods=lsdadvance_front_end --repeats=3 \
+      --threads=$threads
+    echo
+    echo "YorkUrban, all 51 images, every line of the defaults, $threads thread(s):"
+    echo
+    run "$B" --dataset=yorkurban --data="$DATA/yorkurban" --lbd --methods=lsdadvance --repeats=3 --threads=$threads
+  done
 
   section "Pose: stereo, KITTI, 50 pairs of consecutive frames (doc/pose.md)"
   run "$B" --dataset=stereo --data="$DATA/kitti_seq1" --methods="$POSE" --csv="$WORK/pose_stereo.csv"

@@ -86,13 +86,14 @@ run_tests "$BUILD" "${GTEST_FILTER:-*}:-LSDAdvance_LongSequence.*" "$BUILD/openc
   'ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:'
 
 # The tests of the code that runs in parallel (the tiles of BASE_FAST_LSD, the gradient rows, the
-# stages on separate instances), on std::threads that ThreadSanitizer sees
-# (test/thread_sanitizer_backend.cpp), at 1, 2, 3 and 8 threads: built from their files alone.
-build_tests "$TSAN_BUILD" thread "test_main.cpp;thread_sanitizer_backend.cpp;test_fast_lsd.cpp;test_robustness.cpp"
+# stages on separate instances, computeLBD's tasks and its calls from several threads), on
+# std::threads that ThreadSanitizer sees (test/thread_sanitizer_backend.cpp), at 1, 2, 3 and 8
+# threads: built from their files alone.
+build_tests "$TSAN_BUILD" thread "test_main.cpp;thread_sanitizer_backend.cpp;test_fast_lsd.cpp;test_robustness.cpp;test_lbd_descriptor.cpp"
 # Exit (code 66) at the first report: an abort there hangs in ThreadSanitizer's own handler.
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$REPO/scripts/tsan_suppressions.txt:print_suppressions=1"
 section "threaded unit tests under TSan"
-run_tests "$TSAN_BUILD" "${GTEST_FILTER:-LSDAdvance_FastLsd.*:LSDAdvance_Determinism.*:LSDAdvance_Concurrency.*}" \
+run_tests "$TSAN_BUILD" "${GTEST_FILTER:-LSDAdvance_FastLsd.*:LSDAdvance_FastLsdOracle.*:LSDAdvance_Determinism.*:LSDAdvance_Concurrency.*:LSDAdvance_LBD.*thread*}" \
   "$TSAN_BUILD/opencv_test_lsd_advance.tsan.log" 'WARNING: ThreadSanitizer|ERROR: ThreadSanitizer'
 
 section "done"

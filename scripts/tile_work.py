@@ -9,7 +9,7 @@ on a busy machine), and from it an estimate of the time of the defaults at 1, 2,
 (doc/performance.md, "Threads"). Per image set: every fifth image of the folder (at most five),
 detected with the defaults by lsd_advance_benchmark at one thread, twice under callgrind: once for
 the instructions of the whole detection, of the work parallel over many small tasks (the
-smoothing and the gradient pass over rows, the rectangles of the regions joined across the
+test of aliasing, the smoothing and the gradient pass over rows, the rectangles of the regions joined across the
 seams, stage 3 over groups, the line responses over segments) and of the tiles (parallel over
 tiles), once with a dump at the start of each tile, for each tile's own. The estimate for T
 threads adds, per image, the serial rest, the small tasks' work divided by T and the tiles
@@ -27,7 +27,7 @@ import tempfile
 
 DETECT = "*LSDAdvanceImpl::detect*"
 # The bodies of parallel_for_ over many small tasks.
-SMALL_TASKS = ("FullScaleSmoothing::SmoothedRows::operator()", "FastLsd::GradientRows::operator()",
+SMALL_TASKS = ("FullScaleSmoothing::SmoothedRows::operator()", "EdgeRows::operator()", "FastLsd::GradientRows::operator()",
                "FastLsd::JoinedRegions::operator()", "GroupTasks::operator()", "SegmentResponses::operator()")
 TILES = "FastLsd::TileRegions::operator()"
 THREADS = (1, 2, 4, 8)

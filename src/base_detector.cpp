@@ -4,10 +4,10 @@
 
 // Stage 0, the base detectors: OpenCV's LSD (from imgproc or ximgproc, opencv_lsd.hpp),
 // FastLineDetector and EDLines (EdgeDrawing), used as they are, and the module's own LSD
-// (fast_lsd.cpp).
+// (fast_lsd/fast_lsd.cpp).
 
 #include "precomp.hpp"
-#include "fast_lsd.hpp"
+#include "fast_lsd/fast_lsd.hpp"
 #include "opencv2/ximgproc/edge_drawing.hpp"
 #include "opencv2/ximgproc/fast_line_detector.hpp"
 
@@ -23,7 +23,7 @@ public:
     explicit LsdBase(const LSDAdvance::LSDParams& p)
         : lsd(createOpenCVLineSegmentDetector(p.refine, p.scale, p.sigmaScale, p.quant, p.angleTolerance,
                                               p.logEps, p.densityThreshold, p.numBins)),
-          scale(p.scale), fullScaleSmoothing(p.fullScaleSigma)
+          scale(p.scale), fullScaleSmoothing(p.fullScaleSigma, p.fullScaleSmoothing)
     {}
     void detect(const Mat& gray, std::vector<Vec4f>& segments) CV_OVERRIDE
     {
@@ -107,13 +107,6 @@ private:
 };
 
 } // namespace
-
-void BaseSegmentDetector::detectOnMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments)
-{
-    detectReadingMask(gray, mask, segments);
-    if (!mask.empty())
-        cutAtMask(mask, segments, pieces);
-}
 
 Ptr<BaseSegmentDetector> createBaseDetector(int kind, const LSDAdvance::LSDParams& lsd,
                                             const LSDAdvance::FLDParams& fld, const EdgeDrawing::Params& edLines)

@@ -23,6 +23,20 @@ float clampedCoordinate(float v, int side)
     return v < 0 ? 0.f : (v >= (float)side ? (float)(side - 1) : v);
 }
 
+// The digital line LBD samples, counted the way LSDDetector counts it: its endpoints rounded to
+// pixels, the line clipped to the image. A line along the last column or row whose endpoints both
+// round to just outside the image would count 0, a region LBD cannot sample: it counts the pixels
+// of the line between the nearest pixels inside instead.
+int supportLength(Size imageSize, float x1, float y1, float x2, float y2)
+{
+    const int count = LineIterator(imageSize, Point2f(x1, y1), Point2f(x2, y2)).count;
+    if (count > 0)
+        return count;
+    const auto inside = [](float v, int side) { return std::min(cvRound(v), side - 1); };
+    return LineIterator(imageSize, Point(inside(x1, imageSize.width), inside(y1, imageSize.height)),
+                        Point(inside(x2, imageSize.width), inside(y2, imageSize.height))).count;
+}
+
 } // namespace
 
 void LSDAdvance::detect(InputArray image, std::vector<KeyLine>& keylines, InputArray mask)
@@ -83,8 +97,7 @@ void linesToKeyLines(InputArray linesIn, Size imageSize, std::vector<KeyLine>& k
         kl.endPointX = kl.ePointInOctaveX = x2;
         kl.endPointY = kl.ePointInOctaveY = y2;
         kl.lineLength = (float)std::sqrt((double)(x2 - x1) * (x2 - x1) + (double)(y2 - y1) * (y2 - y1));
-        // The digital line LBD samples, counted the way LSDDetector counts it.
-        kl.numOfPixels = LineIterator(imageSize, Point2f(x1, y1), Point2f(x2, y2)).count;
+        kl.numOfPixels = supportLength(imageSize, x1, y1, x2, y2);
         kl.angle = std::atan2(y2 - y1, x2 - x1);
         kl.class_id = (int)i;
         kl.octave = 0;

@@ -159,8 +159,9 @@ int countLongOrStrong(const std::vector<Vec4f>& segments, const std::vector<floa
 }
 
 void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& p,
-                           KnownResponses& known)
+                           KnownResponses& known, LSDAdvanceStats& stats)
 {
+    const int64 start = getTickCount();
     params = p;
     const bool filtering = p.lengthFilterMode != LSDAdvance::LENGTH_FILTER_NONE;
     unitMinLength = filtering ? p.lengthThresholdScale * adaptiveMinLength(base, 1.0, p.lengthThresholdRule) : 0.0;
@@ -170,12 +171,14 @@ void LengthFilter::measure(const std::vector<Vec4f>& base, const Mat* gray, cons
     unitMinResponse = strong ? p.lengthThresholdScale *
                                    adaptiveMinResponse(known.complete(*gray, base), 1.0, p.lengthThresholdRule)
                              : 0.0;
+    stats.filterMs += elapsedMs(start);
 }
 
 void LengthFilter::apply(const std::vector<Vec4f>& in, const Mat* gray, const KeptCounts& history,
                          KnownResponses& known, std::vector<Vec4f>& kept, std::vector<int>& keptFrom,
                          LSDAdvanceStats& stats)
 {
+    const int64 start = getTickCount();
     if (params.lengthFilterMode == LSDAdvance::LENGTH_FILTER_NONE)
     {
         kept = in;
@@ -183,6 +186,7 @@ void LengthFilter::apply(const std::vector<Vec4f>& in, const Mat* gray, const Ke
         for (size_t i = 0; i < in.size(); i++)
             keptFrom[i] = (int)i;
         stats.filteredSegments = (int)in.size();
+        stats.filterMs += elapsedMs(start);
         return;
     }
     // Fused segments have responses of their own; the others have their base segment's.
@@ -204,6 +208,7 @@ void LengthFilter::apply(const std::vector<Vec4f>& in, const Mat* gray, const Ke
     stats.minResponse = responses.empty() ? 0.0 : alpha * unitMinResponse;
     keepLongOrStrong(in, responses, stats.minLength, stats.minResponse, kept, &keptFrom);
     stats.filteredSegments = (int)kept.size();
+    stats.filterMs += elapsedMs(start);
 }
 
 }}} // namespace cv::ximgproc::lsda

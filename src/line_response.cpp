@@ -163,34 +163,17 @@ double meanContrast(const Mat& gray, const Vec4f& s)
 // costs the pool more than their samples.
 constexpr int kSegmentsPerTask = 64;
 
-// The responses of a range of segments that have none yet (negative); each is computed alone.
-class SegmentResponses CV_FINAL : public ParallelLoopBody
+// The response of segment i of a gray image.
+float segmentResponse(const Mat& gray, const Vec4f& segment)
 {
-public:
-    SegmentResponses(const Mat& gray_, const std::vector<Vec4f>& segments_, std::vector<float>& responses_)
-        : gray(gray_), segments(segments_), responses(responses_) {}
-    void operator()(const Range& range) const CV_OVERRIDE
-    {
-        const double longerSide = std::max(gray.cols, gray.rows);
-        const int end = std::min((int)segments.size(), range.end * kSegmentsPerTask);
-        for (int i = range.start * kSegmentsPerTask; i < end; i++)
-        {
-            if (responses[i] >= 0.f)
-                continue;
-            const double contrast = meanContrast(gray, segments[i]) / 255.0;
-            // A segment the frame cuts shows a part of its line that changes from view to view, and
-            // LBD's bands reach out of the image: it is found again less often, and matched wrongly
-            // more often (measured on HPatches and KITTI, doc/matching.md).
-            const double visibility = cutByBorder(segments[i], gray.size()) ? kCutFactor : 1.0;
-            responses[i] = (float)(segmentLength(segments[i]) / longerSide * contrast * contrast * visibility);
-        }
-    }
-
-private:
-    const Mat& gray;
-    const std::vector<Vec4f>& segments;
-    std::vector<float>& responses;
-};
+    const double longerSide = std::max(gray.cols, gray.rows);
+    const double contrast = meanContrast(gray, segment) / 255.0;
+    // A segment the frame cuts shows a part of its line that changes from view to view, and
+    // LBD's bands reach out of the image: it is found again less often, and matched wrongly
+    // more often (measured on HPatches and KITTI, doc/matching.md).
+    const double visibility = cutByBorder(segment, gray.size()) ? kCutFactor : 1.0;
+    return (float)(segmentLength(segment) / longerSide * contrast * contrast * visibility);
+}
 
 // The responses of the segments whose response is negative (not known yet), one per segment.
 void unknownResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::vector<float>& responses)
@@ -200,8 +183,14 @@ void unknownResponses(const Mat& gray, const std::vector<Vec4f>& segments, std::
         return;
     // Before the tasks: the caller gets the error.
     CV_CheckTypeEQ(gray.type(), CV_8UC1, "lineResponses samples a gray image");
-    const int tasks = ((int)segments.size() + kSegmentsPerTask - 1) / kSegmentsPerTask;
-    parallel_for_(Range(0, tasks), SegmentResponses(gray, segments, responses), tasks);
+    // Each segment that has none yet (negative) alone.
+    TaskLayout tasks;
+    tasks.evenly((int)segments.size(), kSegmentsPerTask);
+    runTasks(tasks, [&](int, const Range& items) {
+        for (int i = items.start; i < items.end; i++)
+            if (responses[i] < 0.f)
+                responses[i] = segmentResponse(gray, segments[i]);
+    });
 }
 
 } // namespace

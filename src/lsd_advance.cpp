@@ -7,17 +7,11 @@
 
 #include "precomp.hpp"
 #include "parameters.hpp"
-#include "segment_merging.hpp"
 
 namespace cv {
 namespace ximgproc {
 
 namespace {
-
-double elapsedMs(int64 since)
-{
-    return (double)(getTickCount() - since) * 1000.0 / getTickFrequency();
-}
 
 class LSDAdvanceImpl CV_FINAL : public LSDAdvance
 {
@@ -33,21 +27,19 @@ public:
         if (!baseDetector)
             baseDetector = lsda::createBaseDetector(parameters.own.baseDetector, parameters.lsd, parameters.fld,
                                                     parameters.edLines);
-        baseDetector->detectOnMask(gray, onMask, frame.incoming);
-        runStages(elapsedMs(start), &gray, onMask, lines);
+        baseDetector->detectReadingMask(gray, onMask, frame.incoming);
+        runStages(lsda::elapsedMs(start), &gray, onMask, lines);
     }
 
     void processSegments(InputArray segments, OutputArray lines, Size imageSize, InputArray mask) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        CV_CheckGE(imageSize.width, 0, "LSDAdvance::processSegments: imageSize is empty or positive");
-        CV_CheckGE(imageSize.height, 0, "LSDAdvance::processSegments: imageSize is empty or positive");
+        CV_Check(imageSize, imageSize.width >= 0 && imageSize.height >= 0,
+                 "LSDAdvance::processSegments: imageSize is empty or positive");
         if (imageSize.empty())
             imageSize = mask.size();  // the mask's image, or none
         const Mat onMask = lsda::toMask(mask, imageSize, "LSDAdvance::processSegments");
         lsda::toImageSegments(segments, "LSDAdvance::processSegments: segments", frame.incoming);
-        if (!onMask.empty())
-            lsda::cutAtMask(onMask, frame.incoming, frame.pieces);
         runStages(0.0, nullptr, onMask, lines, imageSize);
     }
 
@@ -76,17 +68,14 @@ public:
     {
         CV_INSTRUMENT_REGION();
         // Only the outputs asked for (noArray() for the others).
-        if (base.needed())
-            Mat(frame.base).copyTo(base);
-        if (filtered.needed())
-            Mat(frame.filtered).copyTo(filtered);
-        if (merged.needed())
-            Mat(frame.merged).copyTo(merged);
+        for (const auto& out : { std::make_pair(&frame.base, &base), std::make_pair(&frame.filtered, &filtered),
+                                 std::make_pair(&frame.merged, &merged) })
+            if (out.second->needed())
+                Mat(*out.first).copyTo(*out.second);
         if (groupLabels.needed())
         {
             std::vector<int> labels;
-            if (frame.grouped)
-                lsda::groupLabels(frame.groups, labels);
+            frame.merge.labels(labels);
             Mat(labels).copyTo(groupLabels);
         }
     }
@@ -94,7 +83,7 @@ public:
     void getLastSources(OutputArrayOfArrays sources) const CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        frame.provenance.sources(lastStats.outputSegments, sources);
+        frame.trace.sources(lastStats.outputSegments, sources);
     }
 
     Params getParams() const CV_OVERRIDE { return parameters.own; }
@@ -126,9 +115,7 @@ public:
 
     void read(const FileNode& fn) CV_OVERRIDE
     {
-        lsda::Parameters p = parameters;
-        lsda::readParameters(fn, p);  // validates every value before changing p
-        parameters = p;
+        lsda::readParameters(fn, parameters);  // validates every value before changing any
         baseDetector.release();
         reset();
     }
@@ -147,29 +134,30 @@ private:
         reset();
     }
 
-    // Stages 1-3 in the configured order on the segments in frame.incoming, which become the
-    // frame's base segments, then the clipping to the image gray, or to an image of imageSize
-    // when there is no gray (processSegments; none when imageSize is empty), then the selection.
-    // Stage 3 fuses nothing across the mask (empty: none).
+    // Stages 1-3 in the configured order on frame.incoming cut at the mask (empty: none), the base
+    // segments; then the clipping to gray's size or imageSize (processSegments; none when empty) and
+    // the selection. Stage 3 fuses nothing across the mask. The trace follows every stage once.
     void runStages(double baseMs, const Mat* gray, const Mat& mask, OutputArray lines, Size imageSize = Size())
     {
         if (gray)
             imageSize = gray->size();
+        if (!mask.empty())
+            lsda::cutAtMask(mask, frame.incoming, frame.pieces);
         // Only a call that got this far replaces the previous call's stage outputs.
         frame.base.swap(frame.incoming);
         LSDAdvanceStats stats;
         stats.baseSegments = (int)frame.base.size();
         stats.baseMs = baseMs;
-        frame.provenance.start(frame.base.size());
-        frame.knownResponses.clear();
-        const int64 t = getTickCount();
-        frame.lengthFilter.measure(frame.base, gray, lsda::LengthFilterParams(parameters.own), frame.knownResponses);
-        stats.filterMs = elapsedMs(t);
-
+        frame.trace.start(frame.base);
+        frame.lengthFilter.measure(frame.base, gray, lsda::LengthFilterParams(parameters.own), frame.trace.responses,
+                                   stats);
         const bool filterFirst = parameters.own.stageOrder == FILTER_THEN_MERGE;
         if (filterFirst)
             filterStage(frame.base, gray, frame.filtered, stats);
-        mergeStage(filterFirst ? frame.filtered : frame.base, mask, frame.merged, stats);
+        const std::vector<Vec4f>& toMerge = filterFirst ? frame.filtered : frame.base;
+        frame.merge.apply(toMerge, lsda::GroupingParams(parameters.own), lsda::MergingParams(parameters.own), mask,
+                          frame.merged, stats);
+        frame.trace.followMerged(toMerge, frame.merged, frame.merge.mergedInto());
         if (!filterFirst)
             filterStage(frame.merged, gray, frame.filtered, stats);
         const std::vector<Vec4f>& last = filterFirst ? frame.merged : frame.filtered;
@@ -177,16 +165,14 @@ private:
         if (!imageSize.empty())
         {
             lsda::clipToImage(last, imageSize, frame.clipped, frame.keptFrom);
-            frame.provenance.followKept(frame.keptFrom, last.size());
-            frame.knownResponses.followKept(last, frame.clipped, frame.keptFrom);
+            frame.trace.followKept(last, frame.clipped, frame.keptFrom);
         }
         const std::vector<Vec4f>& unselected = imageSize.empty() ? last : frame.clipped;
-
         const int64 s = getTickCount();
-        frame.selection.apply(unselected, gray, lsda::SelectionParams(parameters.own), imageSize, frame.knownResponses,
+        frame.selection.apply(unselected, gray, lsda::SelectionParams(parameters.own), imageSize, frame.trace.responses,
                               frame.selected, frame.responses, frame.keptFrom);
-        frame.provenance.followKept(frame.keptFrom, unselected.size());
-        stats.selectionMs = elapsedMs(s);
+        frame.trace.followSelected(frame.keptFrom, unselected.size());
+        stats.selectionMs = lsda::elapsedMs(s);
         stats.outputSegments = (int)frame.selected.size();
         stats.frameInSequence = framesInSequence;
         Mat(frame.selected).copyTo(lines);
@@ -197,53 +183,24 @@ private:
 
     void filterStage(const std::vector<Vec4f>& in, const Mat* gray, std::vector<Vec4f>& kept, LSDAdvanceStats& stats)
     {
-        const int64 t = getTickCount();
-        frame.lengthFilter.apply(in, gray, history, frame.knownResponses, kept, frame.keptFrom, stats);
-        frame.provenance.followKept(frame.keptFrom, in.size());
-        frame.knownResponses.followKept(in, kept, frame.keptFrom);
-        stats.filterMs += elapsedMs(t);
-    }
-
-    void mergeStage(const std::vector<Vec4f>& in, const Mat& mask, std::vector<Vec4f>& merged, LSDAdvanceStats& stats)
-    {
-        const lsda::MergingParams merging(parameters.own);
-        frame.grouped = merging.mergeStrategy != MERGE_NONE;  // with MERGE_NONE, stages 2 and 3 are skipped
-        if (!frame.grouped)
-        {
-            merged = in;
-            stats.mergedSegments = (int)in.size();
-            return;
-        }
-        int64 t = getTickCount();
-        lsda::groupSegments(in, lsda::GroupingParams(parameters.own), frame.groups, frame.grouping);
-        stats.mergeGroups = lsda::mergeGroupCount(frame.groups);
-        stats.groupingMs = elapsedMs(t);
-        t = getTickCount();
-        lsda::mergeGroups(in, frame.groups, merging, merged, frame.mergedInto, frame.merging, mask);
-        frame.provenance.followMerged(frame.mergedInto);
-        frame.knownResponses.followMerged(in, merged, frame.mergedInto);
-        stats.mergedSegments = (int)merged.size();
-        stats.mergingMs = elapsedMs(t);
+        frame.lengthFilter.apply(in, gray, history, frame.trace.responses, kept, frame.keptFrom, stats);
+        frame.trace.followKept(in, kept, frame.keptFrom);
     }
 
     lsda::Parameters parameters;
     Ptr<lsda::BaseSegmentDetector> baseDetector;  // built on first use after a base parameter changes
-    // The last call's stage outputs (a stage that is off copies its input), and the buffers of the
-    // stages, kept from frame to frame so that a sequence does not allocate.
+    // The last call's stage outputs (a stage that is off copies its input) and the stages' buffers,
+    // kept from frame to frame so that a sequence does not allocate.
     struct Frame
     {
         std::vector<Vec4f> incoming;  // segments of the current call until its stages run
         std::vector<Vec4f> pieces;    // a buffer of the cut at the mask
         std::vector<Vec4f> base, filtered, merged, clipped, selected;
         std::vector<float> responses;  // of the selected lines, with an image
-        bool grouped = false;         // groups partition stage 2's input
-        lsda::SegmentGroups groups;
-        std::vector<int> keptFrom, mergedInto;
-        lsda::SegmentProvenance provenance;
-        lsda::KnownResponses knownResponses;
+        std::vector<int> keptFrom;
+        lsda::StageTrace trace;
         lsda::LengthFilter lengthFilter;
-        lsda::GroupingWorkspace grouping;
-        lsda::MergeWorkspace merging;
+        lsda::MergeStage merge;
         lsda::LineSelection selection;
     } frame;
     lsda::KeptCounts history;  // the sequence state

@@ -58,6 +58,7 @@
     X(double, scale, 1.0, Range::real(0, OPEN, 1, CLOSED), "lsdScale")                                             \
     X(double, sigmaScale, 0.6, Range::real(0, OPEN, 100, CLOSED), "lsdSigmaScale")                                 \
     X(double, fullScaleSigma, 0.5, Range::real(0, CLOSED, 3, CLOSED, " px"), nullptr)                              \
+    X(int, fullScaleSmoothing, LSDAdvance::SMOOTH_ALIASED_IMAGES, Range::enumOf(kFullScaleSmoothings), nullptr)     \
     X(double, quant, 2.0, Range::real(0, CLOSED, 255, CLOSED), "lsdQuant")                                         \
     X(double, angleTolerance, 22.5, Range::real(0, OPEN, 180, OPEN, " deg"), "lsdAngleTolerance")                  \
     X(double, logEps, 0.0, Range::real(-1000, CLOSED, 1000, CLOSED), "lsdLogEps")                                  \
@@ -111,6 +112,7 @@ const char* const kMergeStrategies[] = { "MERGE_NONE", "MERGE_BASELINES", "MERGE
 const char* const kLsdRefinements[] = { "LSD_REFINE_NONE", "LSD_REFINE_STD", "LSD_REFINE_ADV" };
 const char* const kRegionGrowths[] = { "GROWTH_PER_PIXEL", "GROWTH_PER_NEIGHBOURHOOD" };
 const char* const kLineOrders[] = { "LINE_ORDER_STRONGEST", "LINE_ORDER_ACROSS_DIRECTIONS" };
+const char* const kFullScaleSmoothings[] = { "SMOOTH_EVERY_IMAGE", "SMOOTH_ALIASED_IMAGES" };
 const char* const kGradientOperators[] = { "PREWITT", "SOBEL", "SCHARR", "LSD" };
 const int kApertureSizes[] = { 3, 5, 7 };
 const char* const kPresets[] = { "PRESET_MOST_ACCURATE", "PRESET_FASTEST", "PRESET_PAPER", "PRESET_SEQUENCE",
@@ -128,6 +130,8 @@ static_assert(LSDA_COUNT_OF(kMergeStrategies) == LSDAdvance::MERGE_LONGEST_FIRST
 static_assert(LSDA_COUNT_OF(kLsdRefinements) == kLsdRefineAdv + 1, "a name per cv::LineSegmentDetectorModes");
 static_assert(LSDA_COUNT_OF(kRegionGrowths) == LSDAdvance::GROWTH_PER_NEIGHBOURHOOD + 1, "a name per LSDAdvance::RegionGrowth");
 static_assert(LSDA_COUNT_OF(kLineOrders) == LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS + 1, "a name per LSDAdvance::LineOrder");
+static_assert(LSDA_COUNT_OF(kFullScaleSmoothings) == LSDAdvance::SMOOTH_ALIASED_IMAGES + 1,
+              "a name per LSDAdvance::FullScaleSmoothing");
 static_assert(LSDA_COUNT_OF(kPresets) == LSDAdvance::PRESET_FRONT_END + 1, "a name per LSDAdvance::Preset");
 static_assert(LSDA_COUNT_OF(kGradientOperators) == EdgeDrawing::LSD + 1, "a name per EdgeDrawing::GradientOperator");
 

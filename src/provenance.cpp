@@ -2,8 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Provenance: the base segments each returned line is made of (LSDAdvance::getLastSources),
-// followed through the stages of a call.
+// The stage trace: the base segments each returned line is made of (LSDAdvance::getLastSources)
+// and the responses known so far, followed through the stages of a call.
 
 #include "precomp.hpp"
 
@@ -34,24 +34,45 @@ void SegmentProvenance::followKept(const std::vector<int>& keptFrom, size_t inpu
 
 void SegmentProvenance::sources(int lineCount, OutputArrayOfArrays out) const
 {
-    std::vector<int> count(lineCount, 0);
-    for (int line : lineOf)
-        if (line >= 0)
-            count[line]++;
+    // The base segments of each line in increasing order (compressed rows; those of no line in a
+    // last row).
+    std::vector<int> rowStart, order(lineOf.size());
+    compressRows((int)lineOf.size(), lineCount + 1, [&](int i) { return lineOf[i] < 0 ? lineCount : lineOf[i]; },
+                 rowStart, [&](int i, int k) { order[k] = i; });
     out.create(lineCount, 1, CV_32S);
-    std::vector<Mat> lists(lineCount);
     for (int j = 0; j < lineCount; j++)
     {
-        out.create(count[j], 1, CV_32S, j);
-        lists[j] = out.getMat(j);
-        count[j] = 0;
+        const int count = rowStart[j + 1] - rowStart[j];
+        out.create(count, 1, CV_32S, j);
+        if (count > 0)
+            std::copy(order.begin() + rowStart[j], order.begin() + rowStart[j + 1], out.getMat(j).ptr<int>());
     }
-    for (size_t i = 0; i < lineOf.size(); i++)
-    {
-        const int j = lineOf[i];
-        if (j >= 0)
-            lists[j].at<int>(count[j]++) = (int)i;
-    }
+}
+
+void StageTrace::start(const std::vector<Vec4f>& base)
+{
+    provenance.start(base.size());
+    responses.clear();
+}
+
+void StageTrace::followKept(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                            const std::vector<int>& keptFrom)
+{
+    provenance.followKept(keptFrom, in.size());
+    responses.followKept(in, out, keptFrom);
+}
+
+void StageTrace::followMerged(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out,
+                              const std::vector<int>& mergedInto)
+{
+    provenance.followMerged(mergedInto);
+    responses.followMerged(in, out, mergedInto);
+}
+
+void StageTrace::followSelected(const std::vector<int>& keptFrom, size_t inputSize)
+{
+    provenance.followKept(keptFrom, inputSize);
+    responses.clear();
 }
 
 }}} // namespace cv::ximgproc::lsda

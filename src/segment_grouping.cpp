@@ -5,7 +5,7 @@
 // Stage 2: angle bins + endpoint adjacency -> merge groups (connected components).
 
 #include "precomp.hpp"
-#include "opencv2/core/hal/intrin.hpp"
+#include "primitives.hpp"
 
 namespace cv {
 namespace ximgproc {
@@ -26,34 +26,6 @@ int nextBin(int b, int bins, bool neighbourBins)
     if (!neighbourBins || bins < 2 || (bins == 2 && b == 1))
         return -1;
     return (b + 1) % bins;
-}
-
-// Union-find whose root is always the smallest index, so that group order does not depend
-// on the order in which adjacent pairs are found.
-int findRoot(std::vector<int>& parent, int i)
-{
-    while (parent[i] != i)
-    {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    return i;
-}
-
-// Points a, b and their roots at the smaller root, without a branch on the depth of the trees:
-// two hops reach the root of nearly every segment (each union points both segments at it).
-void unite(std::vector<int>& parent, int a, int b)
-{
-    int rootA = parent[parent[a]], rootB = parent[parent[b]];
-    if (parent[rootA] != rootA || parent[rootB] != rootB)
-    {
-        rootA = findRoot(parent, rootA);
-        rootB = findRoot(parent, rootB);
-    }
-    const int root = std::min(rootA, rootB);
-    parent[std::max(rootA, rootB)] = root;
-    parent[a] = root;
-    parent[b] = root;
 }
 
 // Cells within +-kCellLimit (checked before the int casts; processSegments' coordinates, within
@@ -116,29 +88,6 @@ private:
     size_t mask;
 };
 
-// values[i] becomes values[0] + ... + values[i], four at a time (a dense grid has many cells).
-void runningSum(int* values, int count)
-{
-    int i = 0, sum = 0;
-#if CV_SIMD128
-    v_int32x4 carry = v_setzero_s32();
-    for (; i + 4 <= count; i += 4)
-    {
-        v_int32x4 v = v_load(values + i);
-        v = v + v_rotate_left<1>(v);
-        v = v + v_rotate_left<2>(v) + carry;
-        v_store(values + i, v);
-        carry = v_broadcast_element<3>(v);
-    }
-    sum = v_extract_n<3>(carry);
-#endif
-    for (; i < count; i++)
-    {
-        sum += values[i];
-        values[i] = sum;
-    }
-}
-
 // The comparisons of endpoints, queued as pairs of filed positions and done in batches. Most
 // fail, and which ones do is unpredictable, as is how many endpoints a cell holds: a range of up
 // to four endpoints is queued without a branch on its length, and a batch is compared without a
@@ -150,9 +99,9 @@ class EndpointComparisons
 public:
     EndpointComparisons(const std::vector<Point2d>& points_, const std::vector<int>& segmentOf_, double maxDistSq_,
                         std::vector<int>& fromBuffer, std::vector<int>& toBuffer, std::vector<Vec2i>& pairBuffer,
-                        std::vector<int>& parent_)
+                        UnionFind& segmentSets)
         : points(points_), segmentOf(segmentOf_), maxDistSq(maxDistSq_), from(fromBuffer), to(toBuffer),
-          pairs(pairBuffer), parent(parent_)
+          pairs(pairBuffer), sets(segmentSets)
     {
         from.resize(kComparisonBatch + 4);
         to.resize(kComparisonBatch + 4);
@@ -192,7 +141,7 @@ public:
             adjacent += (d.dot(d) < maxDistSq) & (segment[a] != segment[b]);
         }
         for (int i = 0; i < adjacent; i++)
-            unite(parent, adjacentPairs[i][0], adjacentPairs[i][1]);
+            sets.unite(adjacentPairs[i][0], adjacentPairs[i][1]);
         count = 0;
     }
 
@@ -217,7 +166,7 @@ private:
     std::vector<int>& from;
     std::vector<int>& to;
     std::vector<Vec2i>& pairs;
-    std::vector<int>& parent;
+    UnionFind& sets;
     int count = 0;
 };
 
@@ -317,32 +266,22 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         ws.cellOfEndpoint[e] = dense ? (int)(b * planeSize + (c.y - lowest.y + 1) * gridWidth + c.x - lowest.x + 1)
                                      : table.insert(cellKey(b, c.x, c.y), cellCount);
     }
-    // Counting sort into cells: the count of cell c at c + 2, the running sum, then each endpoint
-    // filed at the start of its cell, kept at c + 1 and moved on, which leaves the start of c at c.
-    ws.cellStart.assign(cellCount + 2, 0);
-    int* const start = ws.cellStart.data();
-    for (int e = 0; e < 2 * n; e++)
-        start[ws.cellOfEndpoint[e] + 2]++;
-    runningSum(start + 2, cellCount);
+    // The endpoints filed by cell (compressed rows).
     ws.cellEndpoints.resize(2 * (size_t)n);
     ws.filedCell.resize(2 * (size_t)n);
     ws.filedPoint.resize(2 * (size_t)n);
     ws.filedSegment.resize(2 * (size_t)n);
-    for (int e = 0; e < 2 * n; e++)
-    {
-        const int k = start[ws.cellOfEndpoint[e] + 1]++;
+    compressRows(2 * n, cellCount, [&](int e) { return ws.cellOfEndpoint[e]; }, ws.cellStart, [&](int e, int k) {
         ws.cellEndpoints[k] = e;
         ws.filedCell[k] = ws.cellOfEndpoint[e];
         ws.filedPoint[k] = endpoint(e);
         ws.filedSegment[k] = e >> 1;
-    }
+    });
 
-    ws.parent.resize(n);
-    for (int i = 0; i < n; i++)
-        ws.parent[i] = i;
+    ws.sets.reset(n);
     {
         EndpointComparisons comparisons(ws.filedPoint, ws.filedSegment, maxDistSq, ws.queuedFrom, ws.queuedTo, ws.pairs,
-                                        ws.parent);
+                                        ws.sets);
         // Each pair of endpoints of one bin is compared once, from the first of them in the filed
         // order: the rest of its cell, the next cell of its row and three cells of the next row;
         // with the next bin, the 9 cells around.
@@ -390,29 +329,18 @@ void groupSegments(const std::vector<Vec4f>& segments, const GroupingParams& par
         comparisons.compareAndUnite();
     }
 
-    // Counting sort of segments by root; roots are smallest members, so groups come out
-    // ordered by their smallest member and members in increasing order. The roots' slots of
-    // groupOf hold their group number once visited (a root is visited before its members).
-    groups.offsets.assign(1, 0);
+    // The groups by root; roots are smallest members, so groups come out ordered by their smallest
+    // member and members in increasing order. A root is visited before its members.
     ws.groupOf.resize(n);
+    int groupCount = 0;
     for (int i = 0; i < n; i++)
     {
-        const int root = findRoot(ws.parent, i);
-        if (root == i)
-        {
-            ws.groupOf[i] = groups.count();
-            groups.offsets.push_back(0);
-        }
-        else
-            ws.groupOf[i] = ws.groupOf[root];
-        groups.offsets[ws.groupOf[i] + 1]++;
+        const int root = ws.sets.find(i);
+        ws.groupOf[i] = root == i ? groupCount++ : ws.groupOf[root];
     }
-    for (int g = 0; g < groups.count(); g++)
-        groups.offsets[g + 1] += groups.offsets[g];
     groups.members.resize(n);
-    ws.fill.assign(groups.offsets.begin(), groups.offsets.end() - 1);
-    for (int i = 0; i < n; i++)
-        groups.members[ws.fill[ws.groupOf[i]]++] = i;
+    compressRows(n, groupCount, [&](int i) { return ws.groupOf[i]; }, groups.offsets,
+                 [&](int i, int k) { groups.members[k] = i; });
 }
 
 int mergeGroupCount(const SegmentGroups& groups)

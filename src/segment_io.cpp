@@ -10,11 +10,11 @@ namespace cv {
 namespace ximgproc {
 namespace lsda {
 
-Mat toGray8U(InputArray image)
+Mat toGray8U(InputArray image, const char* what)
 {
     if (image.empty())
-        CV_Error(Error::StsBadArg, "LSDAdvance: the input image is empty; expected a non-empty "
-                                   "CV_8UC1 (gray), CV_8UC3 (BGR) or CV_8UC4 (BGRA) image");
+        CV_Error_(Error::StsBadArg, ("%s: the input image is empty; expected a non-empty "
+                                     "CV_8UC1 (gray), CV_8UC3 (BGR) or CV_8UC4 (BGRA) image", what));
     const int type = image.type();
     if (type == CV_8UC1)
         return image.getMat();
@@ -25,9 +25,9 @@ Mat toGray8U(InputArray image)
         cvtColor(image, gray, COLOR_BGRA2GRAY);
     else
         CV_Error_(Error::BadDepth,
-                  ("LSDAdvance: unsupported image type %s (%dx%d); accepted: CV_8UC1 (gray), "
+                  ("%s: unsupported image type %s (%dx%d); accepted: CV_8UC1 (gray), "
                    "CV_8UC3 (BGR), CV_8UC4 (BGRA)",
-                   typeToString(type).c_str(), image.cols(), image.rows()));
+                   what, typeToString(type).c_str(), image.cols(), image.rows()));
     return gray;
 }
 

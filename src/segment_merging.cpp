@@ -133,12 +133,6 @@ bool passes(const Vec4f& base, const Vec4f& seg, double baseLength, double segLe
     return score >= params.mergeThreshold && (mask.empty() || gapInMask(mask, base, seg));
 }
 
-// Rounding slack of the pruning bounds below: they may only ever let more pairs through.
-double withSlack(double distance)
-{
-    return distance + 1e-9 * std::abs(distance) + 1e-6;
-}
-
 // Lanes of the sweep: 8 times the perpendicular gate, at least 8 px (narrower lanes cost more
 // look-ups than they save on YorkUrban and on the synthetic sets).
 double laneWidth(const MergingParams& params)
@@ -508,109 +502,6 @@ Vec4f fuseSegments(const Vec4f& baseline, const Vec4f& other)
     return fuseSegmentsOfLengths(baseline, other, segmentLength(baseline), segmentLength(other));
 }
 
-void ProjectionSweep::build(const std::vector<Vec4f>& geometry, const std::vector<int>& filed, const Point2d& dir,
-                            double laneWidth)
-{
-    direction = dir;
-    normal = Point2d(-dir.y, dir.x);
-    const int m = (int)filed.size();
-    across.resize(m);
-    double lo = 0, hi = 0;
-    for (int k = 0; k < m; k++)
-    {
-        const Vec4f& s = geometry[filed[k]];
-        across[k] = normal.dot(Point2d(0.5 * ((double)s[0] + s[2]), 0.5 * ((double)s[1] + s[3])));
-        lo = k == 0 ? across[k] : std::min(lo, across[k]);
-        hi = k == 0 ? across[k] : std::max(hi, across[k]);
-    }
-    laneOrigin = lo;
-    laneSize = std::max(laneWidth, (hi - lo) / std::max(m, 1) + 1e-9);
-    const int laneCount = m == 0 ? 1 : (int)((hi - lo) / laneSize) + 1;
-    sortBuffer.clear();
-    for (int k = 0; k < m; k++)
-    {
-        const int lane = std::min((int)((across[k] - lo) / laneSize), laneCount - 1);
-        sortBuffer.push_back(std::make_pair(std::make_pair(lane, project(geometry[filed[k]])[0]), filed[k]));
-    }
-    std::sort(sortBuffer.begin(), sortBuffer.end());
-    starts.resize(m);
-    ends.resize(m);
-    ids.resize(m);
-    segments.resize(m);
-    laneStart.assign(laneCount + 1, 0);
-    positionOf.assign(geometry.size(), -1);
-    nextFiled.resize(m + 1);
-    previousFiled.resize(m + 1);
-    for (int p = 0; p < m; p++)
-    {
-        ids[p] = sortBuffer[p].second;
-        segments[p] = geometry[ids[p]];
-        starts[p] = sortBuffer[p].first.second;
-        ends[p] = project(geometry[ids[p]])[1];
-        positionOf[ids[p]] = p;
-        laneStart[sortBuffer[p].first.first + 1]++;
-    }
-    for (int l = 0; l < laneCount; l++)
-        laneStart[l + 1] += laneStart[l];
-    for (int p = 0; p <= m; p++)
-        nextFiled[p] = previousFiled[p] = p;
-}
-
-void ProjectionSweep::lanesNear(const Vec4f& base, double low, double high, double maxOffset, int& first,
-                                int& last) const
-{
-    first = 0;
-    last = lanes() - 1;
-    const Point2d a(base[0], base[1]), d(base[2] - base[0], base[3] - base[1]);
-    const double len = std::sqrt(d.dot(d));
-    if (!(len > 0))
-        return;
-    const Point2d u = d * (1.0 / len);
-    const double along = direction.dot(u);
-    if (std::abs(along) < std::sqrt(0.5))
-        return;
-    // Across-coordinate of the base's line at the projections low and high; a point within
-    // maxOffset of the line is within maxOffset / |along| of it at the same projection.
-    const double slope = normal.dot(u) / along, ta = direction.dot(a), qa = normal.dot(a);
-    const double q1 = qa + (low - ta) * slope, q2 = qa + (high - ta) * slope;
-    const double margin = withSlack(maxOffset / std::abs(along));
-    const double qLow = std::min(q1, q2) - margin, qHigh = std::max(q1, q2) + margin;
-    first = (int)std::max((double)first, std::floor((qLow - laneOrigin) / laneSize));
-    last = (int)std::min((double)last, std::floor((qHigh - laneOrigin) / laneSize));
-}
-
-Vec2d ProjectionSweep::project(const Vec4f& s) const
-{
-    const double a = direction.x * s[0] + direction.y * s[1];
-    const double b = direction.x * s[2] + direction.y * s[3];
-    return Vec2d(std::min(a, b), std::max(a, b));
-}
-
-void ProjectionSweep::remove(int id)
-{
-    const int p = positionOf[id];
-    if (p < 0)
-        return;
-    positionOf[id] = -1;
-    nextFiled[p] = p + 1;
-    previousFiled[p + 1] = p;
-}
-
-int ProjectionSweep::lowerBound(int lane, double value) const
-{
-    // std::lower_bound without a branch on the comparisons, which are unpredictable.
-    int first = laneStart[lane], count = laneStart[lane + 1] - first;
-    if (count == 0)
-        return first;
-    while (count > 1)
-    {
-        const int half = count / 2;
-        first = starts[first + half] < value ? first + half : first;
-        count -= half;
-    }
-    return first + (starts[first] < value);
-}
-
 namespace {
 
 // Members per task of stage 3, at least: most groups hold one segment, and a task of a few
@@ -624,7 +515,7 @@ void mergeGroup(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                 std::vector<Vec4f>& placed, int& survivors, std::vector<int>& mergedInto)
 {
     const int begin = groups.offsets[g], end = groups.offsets[g + 1];
-    if (end - begin == 1 || params.mergeStrategy == LSDAdvance::MERGE_NONE)
+    if (end - begin == 1)
     {
         for (int k = begin; k < end; k++)
         {
@@ -663,50 +554,26 @@ void mergeGroup(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
     }
 }
 
-// The groups of a range of tasks, each task with its own workspace.
-class GroupTasks CV_FINAL : public ParallelLoopBody
-{
-public:
-    GroupTasks(const std::vector<Vec4f>& segments_, const SegmentGroups& groups_, const MergingParams& params_,
-               const Mat& mask_, MergeWorkspace& ws_, std::vector<int>& mergedInto_)
-        : segments(segments_), groups(groups_), params(params_), mask(mask_), ws(ws_), mergedInto(mergedInto_) {}
-    void operator()(const Range& range) const CV_OVERRIDE
-    {
-        for (int t = range.start; t < range.end; t++)
-            for (int g = ws.taskStart[t]; g < ws.taskStart[t + 1]; g++)
-                mergeGroup(segments, groups, g, params, mask, ws.tasks[t], ws.placed, ws.survivors[g], mergedInto);
-    }
-
-private:
-    const std::vector<Vec4f>& segments;
-    const SegmentGroups& groups;
-    const MergingParams& params;
-    const Mat& mask;
-    MergeWorkspace& ws;
-    std::vector<int>& mergedInto;
-};
-
 } // namespace
 
 void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                  const MergingParams& params, std::vector<Vec4f>& merged, std::vector<int>& mergedInto,
                  MergeWorkspace& ws, const Mat& mask)
 {
+    CV_Assert(params.mergeStrategy != LSDAdvance::MERGE_NONE);
     merged.clear();
     merged.reserve(segments.size());
     mergedInto.assign(segments.size(), -1);
     const int count = groups.count();
-    ws.taskStart.clear();
-    for (int g = 0; g < count; g++)
-        if (ws.taskStart.empty() || groups.offsets[g] - groups.offsets[ws.taskStart.back()] >= kMembersPerTask)
-            ws.taskStart.push_back(g);
-    const int tasks = (int)ws.taskStart.size();
-    ws.taskStart.push_back(count);
-    if (ws.tasks.size() < (size_t)tasks)
-        ws.tasks.resize(tasks);
+    ws.tasks.byWeight(count, kMembersPerTask, [&](int g) { return groups.offsets[g + 1] - groups.offsets[g]; });
+    if (ws.taskWorkspaces.size() < (size_t)ws.tasks.count())
+        ws.taskWorkspaces.resize(ws.tasks.count());
     ws.placed.resize(groups.members.size());
     ws.survivors.resize(count);
-    parallel_for_(Range(0, tasks), GroupTasks(segments, groups, params, mask, ws, mergedInto), tasks);
+    runTasks(ws.tasks, [&](int task, const Range& taskGroups) {
+        for (int g = taskGroups.start; g < taskGroups.end; g++)
+            mergeGroup(segments, groups, g, params, mask, ws.taskWorkspaces[task], ws.placed, ws.survivors[g], mergedInto);
+    });
 
     // The survivors in group order; the places mergedInto holds become their indices there.
     ws.outputIndex.resize(groups.members.size());
@@ -727,6 +594,41 @@ void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups
     MergeWorkspace workspace;
     std::vector<int> mergedInto;
     mergeGroups(segments, groups, params, merged, mergedInto, workspace, mask);
+}
+
+MergeStage::MergeStage() : mergingBuffers(makePtr<MergeWorkspace>()) {}
+
+MergeStage::~MergeStage() = default;
+
+void MergeStage::apply(const std::vector<Vec4f>& in, const GroupingParams& grouping, const MergingParams& merging,
+                       const Mat& mask, std::vector<Vec4f>& merged, LSDAdvanceStats& stats)
+{
+    isGrouped = merging.mergeStrategy != LSDAdvance::MERGE_NONE;
+    if (!isGrouped)
+    {
+        merged = in;
+        into.resize(in.size());
+        for (size_t i = 0; i < in.size(); i++)
+            into[i] = (int)i;
+        stats.mergedSegments = (int)in.size();
+        return;
+    }
+    int64 t = getTickCount();
+    groupSegments(in, grouping, segmentGroups, groupingBuffers);
+    stats.mergeGroups = mergeGroupCount(segmentGroups);
+    stats.groupingMs = elapsedMs(t);
+    t = getTickCount();
+    mergeGroups(in, segmentGroups, merging, merged, into, *mergingBuffers, mask);
+    stats.mergedSegments = (int)merged.size();
+    stats.mergingMs = elapsedMs(t);
+}
+
+void MergeStage::labels(std::vector<int>& groupLabels) const
+{
+    if (isGrouped)
+        lsda::groupLabels(segmentGroups, groupLabels);
+    else
+        groupLabels.clear();
 }
 
 }}} // namespace cv::ximgproc::lsda

@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Stage 3's pruning machinery: the projection sweep that keeps merging near-linear, and the
-// buffers merging reuses from group to group and from task to task. Internal to segment_merging.cpp, the
+// buffers merging reuses from group to group and from task to task. Internal to segment_merging.cpp and
+// projection_sweep.cpp (the sweep), the
 // implementation class (which owns a workspace) and the tests of the sweep.
 
 #ifndef OPENCV_LSD_ADVANCE_SEGMENT_MERGING_HPP
@@ -14,6 +15,12 @@
 namespace cv {
 namespace ximgproc {
 namespace lsda {
+
+//! Rounding slack of the merging's pruning bounds: they may only ever let more pairs through.
+inline double withSlack(double distance)
+{
+    return distance + 1e-9 * std::abs(distance) + 1e-6;
+}
 
 //! The segments of one group that may still fuse, filed by the start of their projection on a
 //! fixed direction, in lanes across it (by the position of their midpoint along the normal),
@@ -58,25 +65,8 @@ public:
 
 private:
     // Defined here to be inlined: merging calls them for every segment it visits.
-    int findNext(int p)
-    {
-        while (nextFiled[p] != p)
-        {
-            nextFiled[p] = nextFiled[nextFiled[p]];
-            p = nextFiled[p];
-        }
-        return p;
-    }
-    int findPrevious(int p)
-    {
-        int q = p + 1;
-        while (previousFiled[q] != q)
-        {
-            previousFiled[q] = previousFiled[previousFiled[q]];
-            q = previousFiled[q];
-        }
-        return q - 1;
-    }
+    int findNext(int p) { return findRoot(nextFiled.data(), p); }
+    int findPrevious(int p) { return findRoot(previousFiled.data(), p + 1) - 1; }
 
     Point2d direction, normal;
     double laneOrigin = 0, laneSize = 1;
@@ -121,8 +111,8 @@ struct GroupWorkspace
 //! their members; the survivors are then gathered in group order.
 struct MergeWorkspace
 {
-    std::vector<int> taskStart;        //!< the first group of each task, and the count at the end
-    std::vector<GroupWorkspace> tasks;
+    TaskLayout tasks;                  //!< consecutive groups, by their members
+    std::vector<GroupWorkspace> taskWorkspaces;
     std::vector<Vec4f> placed;         //!< the survivors of each group, from its first member's place
     std::vector<int> survivors;        //!< per group
     std::vector<int> outputIndex;      //!< index in the merged output of each place

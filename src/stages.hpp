@@ -5,14 +5,15 @@
 // Internal interface of the LSDAdvance pipeline: one file per stage, plain data in and out, each
 // stage with the parameters it reads only, so that each can be tested alone. This is the only
 // internal header the tests include: the CV_EXPORTS functions below, which the module's tests call
-// directly, and through fast_lsd.hpp the class of BASE_FAST_LSD, whose tiles they check.
+// directly, and through fast_lsd/fast_lsd.hpp the class of BASE_FAST_LSD, whose tiles they check.
 
 #ifndef OPENCV_LSD_ADVANCE_STAGES_HPP
 #define OPENCV_LSD_ADVANCE_STAGES_HPP
 
 #include "opencv2/lsd_advance/lsd_advance.hpp"
-#include "fast_lsd.hpp"
+#include "fast_lsd/fast_lsd.hpp"
 #include "opencv_lsd.hpp"
+#include "primitives.hpp"
 #include <algorithm>
 #include <vector>
 
@@ -22,8 +23,9 @@ namespace lsda {
 
 //--- the callers' arrays (segment_io.cpp)
 
-//! Returns the image as CV_8UC1 (a view when it already is); throws on any other input.
-Mat toGray8U(InputArray image);
+//! Returns the image as CV_8UC1 (a view when it already is); throws on any other input, the
+//! message starting with `what`.
+Mat toGray8U(InputArray image, const char* what = "LSDAdvance");
 
 //! Segments of an N x 1 or 1 x N CV_32FC4 array (empty for an empty one) into a caller's buffer;
 //! throws on any other layout, naming `what` in the message.
@@ -68,20 +70,14 @@ public:
     virtual ~BaseSegmentDetector() {}
     //! Segments of a CV_8UC1 image, oriented brighter side on the left.
     virtual void detect(const Mat& gray, std::vector<Vec4f>& segments) = 0;
-    //! The segments on a mask (toMask(); empty for none): those of the detector, cut at the mask
-    //! (cutAtMask()), the detector reading the mask itself when it can (BASE_FAST_LSD).
-    void detectOnMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments);
-
-protected:
-    //! The detection before the cut: detect(), which does not read the mask, unless overridden.
+    //! The segments on a mask (toMask(); empty for none), before the pipeline's cut at it
+    //! (cutAtMask()): those of detect(), the detector reading the mask itself when it can
+    //! (BASE_FAST_LSD: no segment crosses a masked-out pixel's gradient).
     virtual void detectReadingMask(const Mat& gray, const Mat& mask, std::vector<Vec4f>& segments)
     {
         CV_UNUSED(mask);
         detect(gray, segments);
     }
-
-private:
-    std::vector<Vec4f> pieces;
 };
 
 //! The detector of kind (LSDAdvance::BaseDetector) with its parameters (those of the other kinds
@@ -155,6 +151,12 @@ struct KeptCounts
 
 CV_EXPORTS double segmentLength(const Vec4f& segment);
 
+//! Wall-clock milliseconds since a getTickCount(): the stages' times in LSDAdvanceStats.
+inline double elapsedMs(int64 since)
+{
+    return (double)(getTickCount() - since) * 1000.0 / getTickFrequency();
+}
+
 //! The paper's inter-frame factor from the kept counts of frames k-1 and k-2 (jumps at r = -0.1).
 CV_EXPORTS double interFrameAlpha(int keptPrevious, int keptBeforePrevious);
 
@@ -195,11 +197,12 @@ public:
     //! (computed into `known`, which follows the base segments). Without an image (processSegments)
     //! it keeps long segments only.
     void measure(const std::vector<Vec4f>& base, const Mat* gray, const LengthFilterParams& params,
-                 KnownResponses& known);
+                 KnownResponses& known, LSDAdvanceStats& stats);
     //! Keeps the long (or strong) segments of in, the base segments given to measure() or merging's
     //! output from them, with the alpha of this frame of the sequence history; the responses of in
     //! that `known` (which follows in) lacks are computed into it. keptFrom gets the index in `in` of
-    //! each kept one. Fills stats' alpha, minLength, minResponse and filteredSegments.
+    //! each kept one. Fills stats' alpha, minLength, minResponse and filteredSegments; measure() and
+    //! apply() add their time to stats.filterMs.
     void apply(const std::vector<Vec4f>& in, const Mat* gray, const KeptCounts& history, KnownResponses& known,
                std::vector<Vec4f>& kept, std::vector<int>& keptFrom, LSDAdvanceStats& stats);
 
@@ -256,9 +259,8 @@ struct GroupingWorkspace
     std::vector<int> filedSegment;
     std::vector<int> queuedFrom, queuedTo;  //!< a batch of comparisons (filed positions) ...
     std::vector<Vec2i> pairs;         //!< ... and of adjacent segments
-    std::vector<int> parent;          //!< union-find forest over the segments
+    UnionFind sets;                   //!< the segments adjacent through their endpoints
     std::vector<int> groupOf;
-    std::vector<int> fill;
 };
 
 //! Groups in O(n) expected time (a grid of endpoints, dense or hashed, union-find). The parameters are in
@@ -329,11 +331,11 @@ constexpr int kSweptGroupSize = 256;
 //! Buffers of stage 3, reused from group to group and call to call (segment_merging.hpp).
 struct MergeWorkspace;
 
-//! Merges each group with params.mergeStrategy (MERGE_NONE passes the segments on) and the score's parameters;
-//! output keeps group order, and member order inside a group; mergedInto gets, for each segment,
-//! the index of the merged segment it is part of. The result is that of scoring every pair of
-//! the group, computed with the sweep. With a mask (toMask()), two segments fuse only when the
-//! gap between them along the line they fuse into is on the mask (inMask()).
+//! Merges each group with params.mergeStrategy (not MERGE_NONE: MergeStage decides it) and the
+//! score's parameters; output keeps group order, and member order inside a group; mergedInto gets,
+//! for each segment, the index of the merged segment it is part of. The result is that of scoring
+//! every pair of the group, computed with the sweep. With a mask (toMask()), two segments fuse only
+//! when the gap between them along the line they fuse into is on the mask (inMask()).
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                             const MergingParams& params, std::vector<Vec4f>& merged,
                             std::vector<int>& mergedInto, MergeWorkspace& workspace, const Mat& mask = Mat());
@@ -341,6 +343,29 @@ CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGro
 //! The same with a temporary workspace, without mergedInto.
 CV_EXPORTS void mergeGroups(const std::vector<Vec4f>& segments, const SegmentGroups& groups,
                             const MergingParams& params, std::vector<Vec4f>& merged, const Mat& mask = Mat());
+
+//! Stages 2 and 3 of a call, with their buffers: the groups of the input, then each group merged;
+//! with MERGE_NONE (decided here only) neither, every segment passed on as it is.
+class CV_EXPORTS MergeStage
+{
+public:
+    MergeStage();
+    ~MergeStage();
+    //! merged gets stage 3's output, mergedInto (for each input segment) the output it is part of;
+    //! fills stats' mergeGroups, mergedSegments, groupingMs and mergingMs.
+    void apply(const std::vector<Vec4f>& in, const GroupingParams& grouping, const MergingParams& merging,
+               const Mat& mask, std::vector<Vec4f>& merged, LSDAdvanceStats& stats);
+    //! groupLabels() of the last input's groups; empty with MERGE_NONE.
+    void labels(std::vector<int>& groupLabels) const;
+    const std::vector<int>& mergedInto() const { return into; }
+
+private:
+    bool isGrouped = false;
+    SegmentGroups segmentGroups;
+    std::vector<int> into;
+    GroupingWorkspace groupingBuffers;
+    Ptr<MergeWorkspace> mergingBuffers;
+};
 
 //--- after the stages: clipping to the image (image_clipping.cpp)
 
@@ -400,6 +425,19 @@ private:
     std::vector<int> order, rankInBin;
 };
 
+//--- LBD descriptors of KeyLines (lbd_descriptor.cpp)
+
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+//! The gradient computeLBD samples, over the whole image: CV_16SC2 (dx, dy) per pixel, those of
+//! cv::Sobel (3 x 3, CV_16S) after cv::GaussianBlur (5 x 5, sigma 1) with their default borders.
+CV_EXPORTS void lbdGradient(const Mat& gray, Mat& gradient);
+
+//! computeLBD's descriptors before they are made binary: N x 72 CV_32F, those of
+//! line_descriptor::BinaryDescriptor::compute with returnFloatDescr = true. The same checks.
+CV_EXPORTS void lbdFloatDescriptors(InputArray image, const std::vector<line_descriptor::KeyLine>& keylines,
+                                    OutputArray descriptors);
+#endif
+
 //--- through the stages: which returned line each base segment is part of (provenance.cpp)
 
 //! Follows the base segments of a call through the stages for getLastSources(): each stage that
@@ -419,6 +457,31 @@ public:
 private:
     std::vector<int> lineOf;  //!< the line each base segment is part of (-1: none)
     std::vector<int> into;
+};
+
+//! What follows the segments of a call through its stages (provenance.cpp): the base segments each
+//! is made of (getLastSources()) and the responses known so far (responses, which a stage that
+//! needs them completes). The orchestrator updates it once after each stage.
+class StageTrace
+{
+public:
+    //! The base segments of a call, none of them with a known response.
+    void start(const std::vector<Vec4f>& base);
+    //! After a stage that made each out[j] of in[keptFrom[j]] (kept, or clipped).
+    void followKept(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out, const std::vector<int>& keptFrom);
+    //! After a stage that made each in[i] part of out[mergedInto[i]].
+    void followMerged(const std::vector<Vec4f>& in, const std::vector<Vec4f>& out, const std::vector<int>& mergedInto);
+    //! After the selection, the last stage, which kept, of its inputSize lines, those of keptFrom:
+    //! their responses are its output (it completes `responses` for the lines it ranks), the trace's
+    //! are spent.
+    void followSelected(const std::vector<int>& keptFrom, size_t inputSize);
+    //! For each of the lineCount lines, the increasing indices of the base segments it is made of.
+    void sources(int lineCount, OutputArrayOfArrays out) const { provenance.sources(lineCount, out); }
+
+    KnownResponses responses;  //!< of the current stage's segments
+
+private:
+    SegmentProvenance provenance;
 };
 
 }}} // namespace cv::ximgproc::lsda

@@ -2,12 +2,14 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Aliased edges (issue 21): shapes drawn without anti-aliasing, as in drawings, screenshots and the
-// frames of simulators, have staircase edges whose 2x2 gradients swing past LSD's angle tolerance.
-// The pre-smoothing at scale 1 (LSDParams::fullScaleSigma), which both LSD bases apply with the
-// same Gaussian (FullScaleSmoothing), finds more of them; at 0 the bases read the image as the LSD
-// algorithm does. Also: a view of a larger image gives the lines of its copy at every
-// scale (the Gaussians reflect the view's border instead of reading around it).
+// Aliased edges: shapes drawn without anti-aliasing, as in drawings, screenshots and the frames of
+// simulators, have staircase edges whose 2x2 gradients swing past LSD's angle tolerance. The
+// pre-smoothing at scale 1 (LSDParams::fullScaleSigma), which both LSD bases apply with the same
+// Gaussian (FullScaleSmoothing), finds more of them; at 0 the bases read the image as the LSD
+// algorithm does. By default (LSDParams::fullScaleSmoothing SMOOTH_ALIASED_IMAGES) only images
+// whose edges are mostly steps of one pixel are smoothed (hasAliasedEdges): a photograph is read as
+// it is. Also: a view of a larger image gives the lines of its copy at every scale (the Gaussians
+// reflect the view's border instead of reading around it).
 
 #include "test_precomp.hpp"
 
@@ -90,13 +92,20 @@ std::vector<Vec4f> detectWith(Ptr<LSDAdvance> detector, const Mat& image)
     return lines;
 }
 
-Ptr<LSDAdvance> withFullScaleSigma(double sigma)
+Ptr<LSDAdvance> withFullScaleSigma(double sigma, int images = LSDAdvance::LSDParams().fullScaleSmoothing)
 {
     Ptr<LSDAdvance> detector = createLSDAdvance();
     LSDAdvance::LSDParams p = detector->getLSDParams();
     p.fullScaleSigma = sigma;
+    p.fullScaleSmoothing = images;
     detector->setLSDParams(p);
     return detector;
+}
+
+bool aliased(const Mat& gray)
+{
+    std::vector<int64> counts;
+    return lsda::hasAliasedEdges(gray, counts);
 }
 
 // The issue's own example: OpenCV's LSD finds 8 lines, the defaults found none.
@@ -222,25 +231,29 @@ AliasedScene drawnLine(Size size, double angle, int width, int background, int c
 
 const double kAngles[] = { 4, 11, 18, 26.5, 33, 41, 48, 56, 63.5, 71, 79, 86 };
 
-// The edges of every scene, at several angles, widths, contrasts and noise levels, that a
-// detector misses.
-int missedEdges(const std::function<Ptr<LSDAdvance>()>& create, int& edges)
+// Every scene, at several angles, widths, contrasts and noise levels.
+void forEachScene(const std::function<void(const AliasedScene&)>& visit)
 {
     RNG rng(21);
-    int missed = 0;
-    edges = 0;
-    const auto check = [&](const AliasedScene& s) {
-        edges += (int)s.edges.size();
-        missed += (int)s.edges.size() - edgesFound(detectWith(create(), s.image), s.edges);
-    };
     for (const double angle : kAngles)
         for (const int contrast : { 40, 120, 200 })
             for (const double noise : { 0.0, 3.0 })
             {
-                check(filledSquare(Size(640, 480), angle, 30, contrast, noise, rng));
+                visit(filledSquare(Size(640, 480), angle, 30, contrast, noise, rng));
                 for (const int width : { 1, 2, 3, 5 })
-                    check(drawnLine(Size(640, 480), angle, width, 30, contrast, noise, rng));
+                    visit(drawnLine(Size(640, 480), angle, width, 30, contrast, noise, rng));
             }
+}
+
+// The edges of every scene that a detector misses.
+int missedEdges(const std::function<Ptr<LSDAdvance>()>& create, int& edges)
+{
+    int missed = 0;
+    edges = 0;
+    forEachScene([&](const AliasedScene& s) {
+        edges += (int)s.edges.size();
+        missed += (int)s.edges.size() - edgesFound(detectWith(create(), s.image), s.edges);
+    });
     return missed;
 }
 
@@ -256,16 +269,17 @@ TEST(LSDAdvance_AliasedEdges, the_pre_smoothing_misses_fewer_edges_of_shapes_dra
 }
 
 // BASE_LSD is OpenCV's LSD on FullScaleSmoothing's image (BASE_FAST_LSD, its oracle test:
-// LSDAdvance_FastLsd.reproduces_OpenCV_LSD_after_the_pre_smoothing_both_ways).
+// LSDAdvance_FastLsdOracle.reproduces_OpenCV_LSD_both_ways/pre_smoothing).
 TEST(LSDAdvance_AliasedEdges, BASE_LSD_reads_the_smoothed_image)
 {
     LSDAdvance::LSDParams p;
     ASSERT_GT(p.fullScaleSigma, 0);
+    p.fullScaleSmoothing = LSDAdvance::SMOOTH_EVERY_IMAGE;
     const Mat image = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
     ASSERT_FALSE(image.empty());
     std::vector<Vec4f> base, direct, unsmoothed;
     lsda::createBaseDetector(LSDAdvance::BASE_LSD, p, LSDAdvance::FLDParams(), EdgeDrawing::Params())->detect(image, base);
-    lsda::FullScaleSmoothing smoothing(p.fullScaleSigma);
+    lsda::FullScaleSmoothing smoothing(p.fullScaleSigma, p.fullScaleSmoothing);
     createLineSegmentDetector(LSD_REFINE_NONE, 1.0)->detect(smoothing.apply(image), direct);
     createLineSegmentDetector(LSD_REFINE_NONE, 1.0)->detect(image, unsmoothed);
     ASSERT_FALSE(base.empty());
@@ -289,7 +303,7 @@ TEST(LSDAdvance_AliasedEdges, the_smoothing_is_OpenCVs_Gaussian_to_one_gray_leve
             const int half = (int)std::ceil(sigma * std::sqrt(2.0 * 3.0 * std::log(10.0)));
             Mat expected;
             GaussianBlur(image.clone(), expected, Size(2 * half + 1, 2 * half + 1), sigma, sigma, BORDER_REFLECT_101);
-            lsda::FullScaleSmoothing smoothing(sigma);
+            lsda::FullScaleSmoothing smoothing(sigma, LSDAdvance::SMOOTH_EVERY_IMAGE);
             ASSERT_FALSE(smoothing.isIdentity());
             const Mat& smoothed = smoothing.apply(image);
             ASSERT_EQ(image.size(), smoothed.size());
@@ -302,14 +316,14 @@ TEST(LSDAdvance_AliasedEdges, the_smoothing_is_OpenCVs_Gaussian_to_one_gray_leve
         RNG(5).fill(tiny, RNG::UNIFORM, 0, 256);
         Mat expected;
         GaussianBlur(tiny, expected, Size(5, 5), 0.5, 0.5, BORDER_REFLECT_101);
-        lsda::FullScaleSmoothing smoothing(0.5);
+        lsda::FullScaleSmoothing smoothing(0.5, LSDAdvance::SMOOTH_EVERY_IMAGE);
         EXPECT_LE(cvtest::norm(smoothing.apply(tiny), expected, NORM_INF), 1) << size;
     }
 }
 
 TEST(LSDAdvance_AliasedEdges, a_sigma_of_0_reads_the_image_as_it_is)
 {
-    EXPECT_TRUE(lsda::FullScaleSmoothing(0.0).isIdentity());
+    EXPECT_TRUE(lsda::FullScaleSmoothing(0.0, LSDAdvance::SMOOTH_EVERY_IMAGE).isIdentity());
     const Mat image = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
     ASSERT_FALSE(image.empty());
     LSDAdvance::LSDParams p;
@@ -338,6 +352,7 @@ TEST(LSDAdvance_AliasedEdges, a_view_gives_the_lines_of_its_copy_at_every_scale)
                 LSDAdvance::LSDParams p;
                 p.scale = scale;
                 p.fullScaleSigma = sigma;
+                p.fullScaleSmoothing = LSDAdvance::SMOOTH_EVERY_IMAGE;  // a photograph's view
                 Ptr<lsda::BaseSegmentDetector> d = lsda::createBaseDetector(base, p, LSDAdvance::FLDParams(), EdgeDrawing::Params());
                 std::vector<Vec4f> ofView, ofCopy;
                 d->detect(view, ofView);
@@ -345,6 +360,107 @@ TEST(LSDAdvance_AliasedEdges, a_view_gives_the_lines_of_its_copy_at_every_scale)
                 ASSERT_FALSE(ofCopy.empty());
                 EXPECT_EQ(ofCopy, ofView);
             }
+}
+
+Mat grayImage(const char* name)
+{
+    const Mat image = imread(samples::findFile(name), IMREAD_GRAYSCALE);
+    CV_Assert(!image.empty());
+    return image;
+}
+
+// What hasAliasedEdges takes for aliased: images drawn without anti-aliasing (OpenCV's rotated
+// rectangles, the scenes above with and without noise, OpenCV's logo) and a photograph enlarged
+// without interpolation; not a photograph (OpenCV's, every YorkUrban image, KITTI frames), nor the
+// same enlargement interpolated, nor white noise, a constant image or one too small for an edge.
+TEST(LSDAdvance_AliasedEdges, drawn_images_have_aliased_edges_and_photographs_do_not)
+{
+    for (const Size size : { Size(640, 480), Size(320, 240) })
+    {
+        RNG rng(0x134679);
+        for (int epoch = 0; epoch < 20; epoch++)
+            EXPECT_TRUE(aliased(rectangleImage(size, randomRectangle(rng, size)))) << size << ", epoch " << epoch;
+    }
+    int scenes = 0;
+    forEachScene([&](const AliasedScene& s) {
+        EXPECT_TRUE(aliased(s.image)) << "scene " << scenes;
+        scenes++;
+    });
+    EXPECT_TRUE(aliased(grayImage("opencv-logo.png")));
+    const Mat building = grayImage("building.jpg");
+    Mat enlarged;
+    resize(building, enlarged, Size(), 2, 2, INTER_NEAREST);
+    EXPECT_TRUE(aliased(enlarged));
+
+    resize(building, enlarged, Size(), 2, 2, INTER_LINEAR);
+    EXPECT_FALSE(aliased(enlarged));
+    for (const char* name : { "building.jpg", "graf1.png", "messi5.jpg", "baboon.jpg", "fruits.jpg" })
+        EXPECT_FALSE(aliased(grayImage(name))) << name;
+    std::vector<std::string> photographs;
+    glob(utils::fs::join(dataFolder("yorkurban"), "images/*.jpg"), photographs);
+    EXPECT_EQ(51u, photographs.size());
+    for (int frame = 0; frame <= 50; frame += 10)
+        photographs.push_back(utils::fs::join(dataFolder("kitti_seq1"), cv::format("image_l/%06d.png", frame)));
+    for (const std::string& path : photographs)
+    {
+        const Mat photograph = imread(path, IMREAD_GRAYSCALE);
+        ASSERT_FALSE(photograph.empty()) << path;
+        EXPECT_FALSE(aliased(photograph)) << path;
+    }
+    Mat noise(240, 320, CV_8UC1);
+    RNG(7).fill(noise, RNG::UNIFORM, 0, 256);
+    EXPECT_FALSE(aliased(noise));
+    EXPECT_FALSE(aliased(Mat(240, 320, CV_8UC1, Scalar(90))));
+    EXPECT_FALSE(aliased(Mat(3, 3, CV_8UC1, Scalar(90))));
+    Mat tiny = (Mat_<uchar>(1, 4) << 10, 10, 200, 200);
+    EXPECT_TRUE(aliased(tiny));
+    EXPECT_TRUE(aliased(tiny.t()));
+}
+
+// By default (SMOOTH_ALIASED_IMAGES) a photograph gives the lines of fullScaleSigma 0, which
+// SMOOTH_EVERY_IMAGE changes, and an aliased image those of SMOOTH_EVERY_IMAGE, which fullScaleSigma
+// 0 changes; on both LSD bases.
+TEST(LSDAdvance_AliasedEdges, only_aliased_images_are_smoothed_by_default)
+{
+    ASSERT_EQ(LSDAdvance::SMOOTH_ALIASED_IMAGES, LSDAdvance::LSDParams().fullScaleSmoothing);
+    RNG rng(5);
+    const Mat photograph = grayImage("building.jpg");
+    Mat drawn = rectangleImage(Size(640, 480), RotatedRect(Point(300, 220), Size(160, 120), 23.f));
+    addNoise(drawn, 3.0, rng);
+    for (const int base : { (int)LSDAdvance::BASE_FAST_LSD, (int)LSDAdvance::BASE_LSD })
+    {
+        SCOPED_TRACE(base == LSDAdvance::BASE_LSD ? "BASE_LSD" : "BASE_FAST_LSD");
+        const auto linesOf = [&](Ptr<LSDAdvance> detector, const Mat& image) {
+            detector->setBaseDetector(base);
+            return detectWith(detector, image);
+        };
+        const std::vector<Vec4f> photographLines = linesOf(createLSDAdvance(), photograph);
+        EXPECT_EQ(linesOf(withFullScaleSigma(0.0), photograph), photographLines);
+        EXPECT_NE(linesOf(withFullScaleSigma(0.5, LSDAdvance::SMOOTH_EVERY_IMAGE), photograph), photographLines);
+        const std::vector<Vec4f> drawnLines = linesOf(createLSDAdvance(), drawn);
+        EXPECT_EQ(linesOf(withFullScaleSigma(0.5, LSDAdvance::SMOOTH_EVERY_IMAGE), drawn), drawnLines);
+        EXPECT_NE(linesOf(withFullScaleSigma(0.0), drawn), drawnLines);
+    }
+}
+
+// The test of aliasing counts in stripes of rows in parallel: the lines of an aliased image (and so
+// the test's outcome) are the same for any number of threads.
+TEST(LSDAdvance_AliasedEdges, the_lines_of_an_aliased_image_do_not_depend_on_the_number_of_threads)
+{
+    const Mat drawn = rectangleImage(Size(640, 480), RotatedRect(Point(300, 220), Size(160, 120), 23.f));
+    const int threads = getNumThreads();
+    std::vector<Vec4f> reference;
+    for (const int n : { 1, 2, 3, 8 })
+    {
+        setNumThreads(n);
+        const std::vector<Vec4f> lines = detectWith(createLSDAdvance(), drawn);
+        if (n == 1)
+            reference = lines;
+        ASSERT_EQ(reference.size(), lines.size()) << n << " threads";
+        EXPECT_EQ(0, memcmp(reference.data(), lines.data(), lines.size() * sizeof(Vec4f))) << n << " threads";
+    }
+    setNumThreads(threads);
+    EXPECT_EQ(8, edgesFound(reference, rectangleEdges(RotatedRect(Point(300, 220), Size(160, 120), 23.f))));
 }
 
 }} // namespace

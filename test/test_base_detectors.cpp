@@ -279,7 +279,8 @@ TEST(LSDAdvance_BaseDetectors, every_base_parameter_changes_the_base_segments)
         { "LSDParams::refine", LSD_REFINE_STD, nullptr, 0 },
         { "LSDParams::scale", 0.5, nullptr, 0 },
         { "LSDParams::sigmaScale", 1.2, "LSDParams::scale", 0.8 },  // smoothing only below scale 1
-        { "LSDParams::fullScaleSigma", 0.0, nullptr, 0 },
+        { "LSDParams::fullScaleSigma", 0.0, "LSDParams::fullScaleSmoothing", LSDAdvance::SMOOTH_EVERY_IMAGE },  // a photograph
+        { "LSDParams::fullScaleSmoothing", LSDAdvance::SMOOTH_EVERY_IMAGE, nullptr, 0 },
         { "LSDParams::quant", 8.0, nullptr, 0 },
         { "LSDParams::angleTolerance", 12.0, nullptr, 0 },
         { "LSDParams::logEps", 3.0, "LSDParams::refine", LSD_REFINE_ADV },

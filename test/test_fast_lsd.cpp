@@ -12,23 +12,25 @@
 #include "test_precomp.hpp"
 
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
-#include <new>
+#include <memory>
 
-// Counts the allocations of this test program, so that a test can count those of a call: under
-// AddressSanitizer through its allocation hook (its own operator new stays, with its checks),
-// otherwise by replacing the global operator new.
+// Counts the allocations of this test program, so that a test can count those of a call: every
+// block from the C allocator, which operator new and cv::fastMalloc (cv::Mat's buffers) both take.
+// Under a sanitizer through its allocation hook (its own allocator stays, with its checks);
+// otherwise by defining the allocator's functions here, over glibc's, which they call.
 static std::atomic<long> g_allocations(0);
 
-#if defined(__SANITIZE_ADDRESS__)
-#define LSDA_TEST_ASAN 1
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define LSDA_TEST_SANITIZER 1
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LSDA_TEST_ASAN 1
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define LSDA_TEST_SANITIZER 1
 #endif
 #endif
 
-#ifdef LSDA_TEST_ASAN
+#ifdef LSDA_TEST_SANITIZER
 // The sanitizers' public interface (sanitizer/allocator_interface.h, which GCC does not install).
 extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, size_t),
                                                          void (*free_hook)(const volatile void*));
@@ -42,27 +44,47 @@ static void ignoreRelease(const volatile void*) {}
 
 // The sanitizers install no hook unless both are given.
 static const int g_hookInstalled = __sanitizer_install_malloc_and_free_hooks(countAllocation, ignoreRelease);
-#else
-void* operator new(std::size_t size)
+#elif defined(__GLIBC__)
+#define LSDA_TEST_COUNTS_MALLOC 1
+extern "C" {
+void* __libc_malloc(size_t size);
+void* __libc_calloc(size_t count, size_t size);
+void* __libc_realloc(void* p, size_t size);
+void* __libc_memalign(size_t alignment, size_t size);
+void* memalign(size_t alignment, size_t size);  // <malloc.h>'s, not <stdlib.h>'s
+
+void* malloc(size_t size)
 {
     g_allocations++;
-    if (void* p = std::malloc(size ? size : 1))
-        return p;
-    throw std::bad_alloc();
+    return __libc_malloc(size);
 }
-
-// GCC takes the replaced operator new for the library's and warns that free() does not match it.
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void operator delete(void* p) noexcept
+void* calloc(size_t count, size_t size)
 {
-    std::free(p);
+    g_allocations++;
+    return __libc_calloc(count, size);
 }
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
-#pragma GCC diagnostic pop
-#endif
+void* realloc(void* p, size_t size)
+{
+    g_allocations++;
+    return __libc_realloc(p, size);
+}
+void* memalign(size_t alignment, size_t size)
+{
+    g_allocations++;
+    return __libc_memalign(alignment, size);
+}
+void* aligned_alloc(size_t alignment, size_t size)
+{
+    g_allocations++;
+    return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** p, size_t alignment, size_t size)
+{
+    g_allocations++;
+    *p = __libc_memalign(alignment, size);
+    return *p || !size ? 0 : ENOMEM;
+}
+} // extern "C"
 #endif
 
 namespace opencv_test { namespace {
@@ -208,33 +230,48 @@ void expectAgreement(const char* set, const Agreement& a, double atLeast)
     EXPECT_GE(a.ourShare(), atLeast) << set;
 }
 
-// The default set-up of LSDAdvance's base: full resolution, no refinement.
-TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_without_refinement_both_ways)
+// The module's LSD against OpenCV's with the same parameters, on the real images of each set-up.
+struct OracleSetUp
 {
-    const LSDAdvance::LSDParams p = exactLsdParams(LSD_REFINE_NONE, 1.0);
-    expectAgreement("yorkurban (51)", compareWithOpenCV(yorkUrbanImages(1), p), 0.98);
-    expectAgreement("kitti_seq1 (every 5th frame)", compareWithOpenCV(kittiFrames(5), p), 0.98);
-    expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.98);
+    const char* name;
+    int refine;
+    double scale;
+    bool smoothed;          //!< with the pre-smoothing of the defaults (LSDParams::fullScaleSigma)
+    int yorkStep, kittiStep;  //!< every n-th image of each set (0: none)
+    double atLeast;         //!< the share reproduced both ways
+};
+
+void PrintTo(const OracleSetUp& s, std::ostream* out)
+{
+    *out << s.name;
 }
 
-// Both after the pre-smoothing of the defaults (LSDParams::fullScaleSigma), the same for both bases.
-TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_after_the_pre_smoothing_both_ways)
+typedef testing::TestWithParam<OracleSetUp> LSDAdvance_FastLsdOracle;
+
+TEST_P(LSDAdvance_FastLsdOracle, reproduces_OpenCV_LSD_both_ways)
 {
-    LSDAdvance::LSDParams p = exactLsdParams(LSD_REFINE_NONE, 1.0);
-    p.fullScaleSigma = LSDAdvance::LSDParams().fullScaleSigma;
-    ASSERT_GT(p.fullScaleSigma, 0);
-    expectAgreement("yorkurban (every 3rd)", compareWithOpenCV(yorkUrbanImages(3), p), 0.98);
-    expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.98);
+    const OracleSetUp& setUp = GetParam();
+    LSDAdvance::LSDParams p = exactLsdParams(setUp.refine, setUp.scale);
+    if (setUp.smoothed)
+    {
+        // Every image smoothed: these are photographs, which the defaults read as they are.
+        p.fullScaleSigma = LSDAdvance::LSDParams().fullScaleSigma;
+        p.fullScaleSmoothing = LSDAdvance::SMOOTH_EVERY_IMAGE;
+    }
+    ASSERT_EQ(setUp.smoothed, p.fullScaleSigma > 0);
+    expectAgreement("yorkurban", compareWithOpenCV(yorkUrbanImages(setUp.yorkStep), p), setUp.atLeast);
+    if (setUp.kittiStep > 0)
+        expectAgreement("kitti_seq1", compareWithOpenCV(kittiFrames(setUp.kittiStep), p), setUp.atLeast);
+    expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), setUp.atLeast);
 }
 
-// OpenCV's default set-up: Gaussian sub-sampling to 0.8 and the refinement of sparse regions.
-TEST(LSDAdvance_FastLsd, reproduces_OpenCV_LSD_with_standard_refinement_at_scale_0_8_both_ways)
-{
-    const LSDAdvance::LSDParams p = exactLsdParams(LSD_REFINE_STD, 0.8);
-    expectAgreement("yorkurban (every 3rd)", compareWithOpenCV(yorkUrbanImages(3), p), 0.95);
-    expectAgreement("kitti_seq1 (every 10th frame)", compareWithOpenCV(kittiFrames(10), p), 0.95);
-    expectAgreement("building.jpg, graf1.png", compareWithOpenCV(opencvSamples(), p), 0.95);
-}
+// The default set-up of LSDAdvance's base (full resolution, no refinement), the same after the
+// pre-smoothing of the defaults (both bases read the smoothed image), and OpenCV's default set-up
+// (Gaussian sub-sampling to 0.8 and the refinement of sparse regions).
+INSTANTIATE_TEST_CASE_P(/**/, LSDAdvance_FastLsdOracle,
+                        testing::Values(OracleSetUp{ "no_refinement", LSD_REFINE_NONE, 1.0, false, 1, 5, 0.98 },
+                                        OracleSetUp{ "pre_smoothing", LSD_REFINE_NONE, 1.0, true, 3, 0, 0.98 },
+                                        OracleSetUp{ "standard_refinement_at_0_8", LSD_REFINE_STD, 0.8, false, 3, 10, 0.95 }));
 
 // With LSD_REFINE_ADV both validate segments by their number of false alarms. OpenCV's
 // LineSegmentDetector before 4.8 keeps nearly every one (its binomial term lacks log(n!), and its
@@ -298,7 +335,7 @@ TEST(LSDAdvance_FastLsd, output_does_not_depend_on_the_number_of_threads)
 {
     const Mat img = imread(samples::findFile("building.jpg"), IMREAD_GRAYSCALE);
     ASSERT_FALSE(img.empty());
-    const int threads = getNumThreads();
+    expectParallelForRunsTasksAtOnce();
     for (int tileHeight : { LSDAdvance::LSDParams().tileHeight, 0, 16 })
         for (int refine : { LSD_REFINE_NONE, LSD_REFINE_STD, LSD_REFINE_ADV })
         {
@@ -310,9 +347,9 @@ TEST(LSDAdvance_FastLsd, output_does_not_depend_on_the_number_of_threads)
             lsd.tileHeight = tileHeight;
             detector->setLSDParams(lsd);
             std::vector<Vec4f> reference;
-            for (int n : { 1, 2, 3, 8 })
+            for (int n : threadCountsToCompare())
             {
-                setNumThreads(n);
+                const ThreadCount threads(n);
                 std::vector<Vec4f> lines;
                 detector->detect(img, lines);
                 if (n == 1)
@@ -322,7 +359,6 @@ TEST(LSDAdvance_FastLsd, output_does_not_depend_on_the_number_of_threads)
             }
             EXPECT_GT(reference.size(), 100u);
         }
-    setNumThreads(threads);
 }
 
 // Stage 3 merges its groups in tasks of consecutive groups and the line responses run in tasks of
@@ -331,7 +367,7 @@ TEST(LSDAdvance_FastLsd, output_does_not_depend_on_the_number_of_threads)
 // hundreds of base segments (several tasks of each: 64 members, 64 segments).
 TEST(LSDAdvance_FastLsd, merging_and_responses_do_not_depend_on_the_number_of_threads)
 {
-    const int threads = getNumThreads();
+    expectParallelForRunsTasksAtOnce();
     for (const std::string& path : { yorkUrbanImages(1)[0], kittiFrames(1)[0] })
     {
         const Mat img = imread(path, IMREAD_GRAYSCALE);
@@ -347,9 +383,9 @@ TEST(LSDAdvance_FastLsd, merging_and_responses_do_not_depend_on_the_number_of_th
             std::vector<float> referenceResponses;
             std::vector<int> referenceLabels;
             std::vector<std::vector<int> > referenceSources;
-            for (int n : { 1, 2, 3, 8 })
+            for (int n : threadCountsToCompare())
             {
-                setNumThreads(n);
+                const ThreadCount threads(n);
                 std::vector<Vec4f> lines, base, merged;
                 std::vector<float> responses;
                 std::vector<int> labels;
@@ -383,7 +419,6 @@ TEST(LSDAdvance_FastLsd, merging_and_responses_do_not_depend_on_the_number_of_th
             }
         }
     }
-    setNumThreads(threads);
 }
 
 // Regions grow in the LSD algorithm's order, so a region only takes pixels weaker than its seed:
@@ -442,7 +477,6 @@ TEST(LSDAdvance_FastLsd, faint_pixels_join_the_regions_of_strong_seeds)
 // about tileHeight rows, from the image size alone.
 TEST(LSDAdvance_FastLsd, tiles_cut_the_rows_from_the_image_size_alone)
 {
-    const int threads = getNumThreads();
     for (const Size size : { Size(640, 480), Size(1226, 370), Size(50, 20), Size(7, 3) })
         for (int tileHeight : { 16, 64, 100000 })
         {
@@ -452,7 +486,7 @@ TEST(LSDAdvance_FastLsd, tiles_cut_the_rows_from_the_image_size_alone)
             std::vector<std::vector<cv::Rect> > layouts;
             for (int n : { 1, 3 })
             {
-                setNumThreads(n);
+                const ThreadCount threads(n);
                 lsda::FastLsd lsd(withOptions(exactLsdParams(LSD_REFINE_NONE, 1.0), 1.0, tileHeight));
                 std::vector<Vec4f> lines;
                 lsd.detect(img, lines);
@@ -472,7 +506,6 @@ TEST(LSDAdvance_FastLsd, tiles_cut_the_rows_from_the_image_size_alone)
             }
             EXPECT_EQ(rows, next);
         }
-    setNumThreads(threads);
 }
 
 // Regions reaching a seam are joined across it with the regions they touch there: an edge crossing
@@ -597,31 +630,52 @@ TEST(LSDAdvance_FastLsd, growth_per_neighbourhood_keeps_the_segments_of_growth_p
     }
 }
 
-// OpenCV's thread pool allocates a job for each parallel loop, so this counts with one thread.
+// Every allocation of a call, operator new's and cv::Mat's alike. OpenCV's thread pool allocates a
+// job for each parallel loop, so this counts with one thread.
 TEST(LSDAdvance_FastLsd, allocates_nothing_per_frame_once_warm)
 {
     const std::string folder = dataFolder("kitti_seq1");
     std::vector<Mat> frames;
     for (int i = 0; i < 4; i++)
         frames.push_back(imread(utils::fs::join(folder, cv::format("image_l/%06d.png", i)), IMREAD_GRAYSCALE));
-#ifdef LSDA_TEST_ASAN
+#if defined(LSDA_TEST_SANITIZER)
     ASSERT_NE(0, g_hookInstalled);
+#elif !defined(LSDA_TEST_COUNTS_MALLOC)
+    throw SkipTestException("the allocations are counted with glibc or under a sanitizer only");
 #endif
-    const int threads = getNumThreads();
-    setNumThreads(1);
+    // The count sees a cv::Mat's buffer (cv::fastMalloc) as it sees operator new.
+    long before = g_allocations;
+    {
+        Mat buffer(64, 64, CV_8UC1);
+        ASSERT_GE(g_allocations - before, 2);
+        before = g_allocations;
+        std::unique_ptr<int> block(new int(1));
+        ASSERT_EQ(1, g_allocations - before);
+    }
+    const ThreadCount oneThread(1);
     Ptr<LSDAdvance> detector = createLSDAdvance();
     detector->setBaseDetector(LSDAdvance::BASE_FAST_LSD);
     std::vector<Vec4f> lines;
     lines.reserve(10000);
     for (const Mat& f : frames)  // warm-up: the buffers grow to the largest frame
         detector->detect(f, lines);
-    const long before = g_allocations;
+    before = g_allocations;
     for (int round = 0; round < 2; round++)
         for (const Mat& f : frames)
             detector->detect(f, lines);
-    const long allocations = g_allocations - before;
-    setNumThreads(threads);
-    EXPECT_EQ(0, allocations);
+    EXPECT_EQ(0, g_allocations - before);
+}
+
+// The scalar build (LSD_ADVANCE_SCALAR, scripts/check_scalar.sh) compiles none of the vector paths,
+// in the library as in the tests; every other build of this machine compiles them.
+TEST(LSDAdvance_Build, universal_intrinsics_are_compiled_unless_the_scalar_build)
+{
+#ifdef LSD_ADVANCE_SCALAR
+    static_assert(!CV_SIMD128, "the scalar build's tests see no universal intrinsics either");
+    EXPECT_FALSE(lsda::compiledWithUniversalIntrinsics());
+#else
+    EXPECT_EQ((bool)CV_SIMD128, lsda::compiledWithUniversalIntrinsics());
+#endif
 }
 
 // An image too large for int pixel indices is refused before any pixel is read (the header below

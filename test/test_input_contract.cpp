@@ -380,32 +380,40 @@ TEST(LSDAdvance_InputContract, image_10000x10000_has_no_overflow)
     EXPECT_EQ(4, longSides);
 }
 
-void expectNoLines(const Mat& img)
+// An image without an edge gives no segment at any stage, and stage 1 computes no threshold.
+struct Featureless
 {
+    const char* name;
+    int type;
+    Scalar value;
+};
+
+void PrintTo(const Featureless& f, std::ostream* out)
+{
+    *out << f.name;
+}
+
+typedef testing::TestWithParam<Featureless> LSDAdvance_Featureless;
+
+TEST_P(LSDAdvance_Featureless, image_gives_no_lines)
+{
+    const Featureless& f = GetParam();
     Ptr<LSDAdvance> detector = createLSDAdvance();
     std::vector<Vec4f> lines;
-    detector->detect(img, lines);
+    detector->detect(Mat(240, 320, f.type, f.value), lines);
     EXPECT_TRUE(lines.empty());
     const LSDAdvanceStats stats = detector->getLastStats();
     EXPECT_EQ(0, stats.baseSegments);
+    EXPECT_EQ(0, stats.outputSegments);
     EXPECT_EQ(0.0, stats.minLength);
     EXPECT_EQ(1.0, stats.alpha);
 }
 
-TEST(LSDAdvance_InputContract, constant_image_gives_no_lines)
-{
-    expectNoLines(Mat(240, 320, CV_8UC1, Scalar(117)));
-}
-
-TEST(LSDAdvance_InputContract, black_image_gives_no_lines)
-{
-    expectNoLines(Mat(240, 320, CV_8UC1, Scalar(0)));
-}
-
-TEST(LSDAdvance_InputContract, white_image_gives_no_lines)
-{
-    expectNoLines(Mat(240, 320, CV_8UC3, Scalar::all(255)));
-}
+INSTANTIATE_TEST_CASE_P(/**/, LSDAdvance_Featureless,
+                        testing::Values(Featureless{ "constant_gray", CV_8UC1, Scalar(117) },
+                                        Featureless{ "mid_gray", CV_8UC1, Scalar(128) },
+                                        Featureless{ "black", CV_8UC1, Scalar(0) },
+                                        Featureless{ "white_colour", CV_8UC3, Scalar::all(255) }));
 
 TEST(LSDAdvance_InputContract, saturated_image_gives_its_edge)
 {
@@ -442,19 +450,55 @@ TEST(LSDAdvance_InputContract, checkerboard_gives_lines_on_the_square_edges)
     }
 }
 
-TEST(LSDAdvance_InputContract, pure_noise_gives_finite_lines_inside_the_image)
+// Noise of each kind: the segments it gives, base and returned, are finite and inside the image,
+// and it gives some (a test of what an empty output holds would pass whatever the detector did).
+struct Noise
 {
-    Mat img(480, 640, CV_8UC1);
+    const char* name;
+    Size size;
+    int distribution;  //!< RNG::UNIFORM (a, b: the range) or RNG::NORMAL (a, b: mean and deviation)
+    double a, b;
+    int preset;
+};
+
+void PrintTo(const Noise& n, std::ostream* out)
+{
+    *out << n.name;
+}
+
+typedef testing::TestWithParam<Noise> LSDAdvance_Noise;
+
+TEST_P(LSDAdvance_Noise, gives_finite_segments_inside_the_image)
+{
+    const Noise& noise = GetParam();
+    Mat img(noise.size, CV_8UC1);
     RNG rng(20260101);
-    rng.fill(img, RNG::UNIFORM, 0, 256);
-    Ptr<LSDAdvance> detector = createLSDAdvance();
-    std::vector<Vec4f> lines;
+    rng.fill(img, noise.distribution, noise.a, noise.b);
+    Ptr<LSDAdvance> detector = createLSDAdvance((LSDAdvance::Preset)noise.preset);
+    std::vector<Vec4f> lines, base;
     detector->detect(img, lines);
-    expectInsideImage(lines, img.size());
+    detector->getLastStageOutputs(base, noArray(), noArray(), noArray());
     const LSDAdvanceStats stats = detector->getLastStats();
+    EXPECT_GT(base.size(), 0u);
+    EXPECT_GT(lines.size(), 0u);
+    EXPECT_EQ((int)lines.size(), stats.outputSegments);
     EXPECT_LE(stats.outputSegments, stats.baseSegments);
     EXPECT_TRUE(std::isfinite(stats.minLength));
+    expectInsideImage(lines, img.size());
+    for (const Vec4f& s : base)
+        for (int i = 0; i < 4; i++)
+            ASSERT_TRUE(std::isfinite(s[i])) << s;
 }
+
+INSTANTIATE_TEST_CASE_P(/**/, LSDAdvance_Noise,
+                        testing::Values(Noise{ "uniform_640x480", Size(640, 480), RNG::UNIFORM, 0, 256,
+                                               LSDAdvance::PRESET_MOST_ACCURATE },
+                                        Noise{ "uniform_320x240", Size(320, 240), RNG::UNIFORM, 0, 256,
+                                               LSDAdvance::PRESET_MOST_ACCURATE },
+                                        Noise{ "normal_640x480_sequence", Size(640, 480), RNG::NORMAL, 128, 40,
+                                               LSDAdvance::PRESET_SEQUENCE },
+                                        Noise{ "normal_640x480_paper", Size(640, 480), RNG::NORMAL, 128, 40,
+                                               LSDAdvance::PRESET_PAPER }));
 
 //--- parameters through the setters
 

@@ -126,6 +126,22 @@ TEST(LSDAdvance_KeyLines, response_ranks_by_length_and_endpoints_are_clamped_int
     EXPECT_EQ(segments[2], back[2]);
 }
 
+TEST(LSDAdvance_KeyLines, a_line_along_the_last_column_or_row_counts_its_pixels)
+{
+    // x = 199.5 rounds (to even) to 200, just outside: LSDDetector's count of the clipped line is 0.
+    const Size size(200, 100);
+    const std::vector<Vec4f> segments = { Vec4f(199.5f, 10, 199.5f, 50), Vec4f(20, 99.5f, 60, 99.5f),
+                                          Vec4f(199.5f, 99.5f, 199.5f, 99.5f) };
+    ASSERT_EQ(0, LineIterator(size, Point2f(199.5f, 10), Point2f(199.5f, 50)).count);
+    std::vector<KeyLine> keylines;
+    linesToKeyLines(segments, size, keylines);
+    ASSERT_EQ(3u, keylines.size());
+    EXPECT_EQ(41, keylines[0].numOfPixels);  // the pixels of column 199 from row 10 to row 50
+    EXPECT_EQ(41, keylines[1].numOfPixels);
+    EXPECT_EQ(1, keylines[2].numOfPixels);
+    EXPECT_EQ(199.5f, keylines[0].startPointX);  // the endpoints themselves are kept
+}
+
 TEST(LSDAdvance_KeyLines, conversion_rejects_bad_input)
 {
     std::vector<KeyLine> keylines;

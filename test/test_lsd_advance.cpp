@@ -83,32 +83,6 @@ Mat clutterImage(uint64 seed)
     return img;
 }
 
-TEST(LSDAdvance_Detect, blank_image_gives_no_lines)
-{
-    Ptr<LSDAdvance> detector = createLSDAdvance();
-    const std::vector<Vec4f> lines = detectLines(detector, Mat(240, 320, CV_8UC1, Scalar(128)));
-    EXPECT_TRUE(lines.empty());
-    const LSDAdvanceStats stats = detector->getLastStats();
-    EXPECT_EQ(0, stats.baseSegments);
-    EXPECT_EQ(0, stats.outputSegments);
-    EXPECT_EQ(0.0, stats.minLength);
-}
-
-TEST(LSDAdvance_Detect, noise_gives_finite_lines_inside_the_image)
-{
-    Mat noise(240, 320, CV_8UC1);
-    theRNG().state = 12345;
-    randu(noise, 0, 256);
-    const std::vector<Vec4f> lines = detectLines(createLSDAdvance(), noise);
-    for (const Vec4f& l : lines)
-        for (int i = 0; i < 4; i++)
-        {
-            ASSERT_TRUE(std::isfinite(l[i]));
-            EXPECT_GE(l[i], -1.0f);
-            EXPECT_LE(l[i], (i % 2 == 0 ? noise.cols : noise.rows) + 1.0f);
-        }
-}
-
 TEST(LSDAdvance_Detect, output_is_Nx1_CV_32FC4)
 {
     Mat lines;
@@ -353,16 +327,6 @@ TEST(LSDAdvance_Detect, building_gives_fewer_and_longer_segments_than_LSD)
     const std::vector<Vec4f> ours = detectLines(createLSDAdvance(), img);
     EXPECT_LT(ours.size(), lsd.size());
     EXPECT_GT(longSegmentShare(ours, 60.0), longSegmentShare(lsd, 60.0));
-}
-
-TEST(LSDAdvance_Detect, same_result_with_one_and_all_threads)
-{
-    const Mat img = buildingImage();
-    const int threads = getNumThreads();
-    setNumThreads(1);
-    const std::vector<Vec4f> single = detectLines(createLSDAdvance(), img);
-    setNumThreads(threads);
-    EXPECT_EQ(single, detectLines(createLSDAdvance(), img));
 }
 
 TEST(LSDAdvance_Input, empty_image_throws)

@@ -212,36 +212,44 @@ TEST(LSDAdvance_MergingBaselines, baselines_never_merge_with_each_other)
     EXPECT_EQ(1u, groupAndMerge(shorter, params).size());
 }
 
-TEST(LSDAdvance_MergingBaselines, merge_threshold_controls_fusion)
+// A piece of 50 px 3 px beyond a baseline of 100 px: Sd = 1, Sp = 1 - 3 / 7.5 = 0.6 (Dth = 0.1 *
+// 75), Sl = 0.5, a score of 0.4 + 0.21 + 0.1 = 0.71 with the paper's weights. It fuses exactly when
+// the score with the case's weights, proximity ratio and threshold reaches the threshold.
+struct ScoreCase
 {
-    // Score of the piece: 0.4 * 1 + 0.35 * (1 - 3 / 7.5) + 0.2 * 0.5 = 0.71.
-    const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
-    lsda::MergingParams params = paperParams();
-    params.mergeThreshold = 0.70;
-    EXPECT_EQ(1u, groupAndMerge(segments, params).size());
-    params.mergeThreshold = 0.72;
-    EXPECT_EQ(2u, groupAndMerge(segments, params).size());
+    const char* name;
+    double mergeThreshold, directionWeight, proximityWeight, lengthWeight, proximityRatio;
+    size_t segments;  //!< after merging: 1 when the piece fuses
+};
+
+void PrintTo(const ScoreCase& c, std::ostream* out)
+{
+    *out << c.name;
 }
 
-TEST(LSDAdvance_MergingBaselines, weights_and_proximity_ratio_change_the_outcome)
+typedef testing::TestWithParam<ScoreCase> LSDAdvance_MergingScore;
+
+TEST_P(LSDAdvance_MergingScore, a_piece_fuses_when_its_score_reaches_the_threshold)
 {
+    const ScoreCase& c = GetParam();
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(103, 0, 153, 0) };
     lsda::MergingParams params = paperParams();
-    params.mergeThreshold = 0.8;
-    EXPECT_EQ(2u, groupAndMerge(segments, params).size());
-    lsda::MergingParams direction = params;
-    direction.directionWeight = 0.8;   // 0.8 + 0.21 + 0.1
-    EXPECT_EQ(1u, groupAndMerge(segments, direction).size());
-    lsda::MergingParams proximity = params;
-    proximity.proximityWeight = 0.7;   // 0.4 + 0.42 + 0.1
-    EXPECT_EQ(1u, groupAndMerge(segments, proximity).size());
-    lsda::MergingParams length = params;
-    length.lengthWeight = 0.6;         // 0.4 + 0.21 + 0.3
-    EXPECT_EQ(1u, groupAndMerge(segments, length).size());
-    lsda::MergingParams ratio = params;
-    ratio.proximityRatio = 1.0;        // Dth = 75: 0.4 + 0.35 * 0.96 + 0.1
-    EXPECT_EQ(1u, groupAndMerge(segments, ratio).size());
+    params.mergeThreshold = c.mergeThreshold;
+    params.directionWeight = c.directionWeight;
+    params.proximityWeight = c.proximityWeight;
+    params.lengthWeight = c.lengthWeight;
+    params.proximityRatio = c.proximityRatio;
+    EXPECT_EQ(c.segments, groupAndMerge(segments, params).size());
 }
+
+INSTANTIATE_TEST_CASE_P(/**/, LSDAdvance_MergingScore, testing::Values(
+    ScoreCase{ "threshold_0_70_below_0_71", 0.70, 0.4, 0.35, 0.2, 0.1, 1 },
+    ScoreCase{ "threshold_0_72_above_0_71", 0.72, 0.4, 0.35, 0.2, 0.1, 2 },
+    ScoreCase{ "threshold_0_8_above_0_71", 0.8, 0.4, 0.35, 0.2, 0.1, 2 },
+    ScoreCase{ "direction_weight_0_8_gives_1_11", 0.8, 0.8, 0.35, 0.2, 0.1, 1 },
+    ScoreCase{ "proximity_weight_0_7_gives_0_92", 0.8, 0.4, 0.7, 0.2, 0.1, 1 },
+    ScoreCase{ "length_weight_0_6_gives_0_91", 0.8, 0.4, 0.35, 0.6, 0.1, 1 },
+    ScoreCase{ "proximity_ratio_1_gives_0_84", 0.8, 0.4, 0.35, 0.2, 1.0, 1 }));
 
 TEST(LSDAdvance_MergingBaselines, best_scores_fuse_first_into_their_best_baseline)
 {
@@ -326,12 +334,28 @@ TEST(LSDAdvance_Similarity, a_point_has_no_direction)
     EXPECT_EQ(0.0, lsda::similarityTerms(Vec4f(5, 5, 5, 5), Vec4f(0, 0, 100, 0), 0.1).direction);
 }
 
+// MERGE_NONE is decided by stages 2 and 3 together (MergeStage): no groups, nothing fused.
 TEST(LSDAdvance_MergingNone, returns_every_segment_unchanged)
 {
     lsda::MergingParams params;
     params.mergeStrategy = LSDAdvance::MERGE_NONE;
     const std::vector<Vec4f> segments = { Vec4f(0, 0, 100, 0), Vec4f(102, 0, 202, 0), Vec4f(204, 0, 230, 0) };
-    EXPECT_EQ(segments, groupAndMerge(segments, params));
+    lsda::MergeStage stage;
+    std::vector<Vec4f> merged;
+    LSDAdvanceStats stats;
+    stage.apply(segments, lsda::GroupingParams(), params, Mat(), merged, stats);
+    EXPECT_EQ(segments, merged);
+    EXPECT_EQ(std::vector<int>({ 0, 1, 2 }), stage.mergedInto());
+    std::vector<int> labels(1, 7);
+    stage.labels(labels);
+    EXPECT_TRUE(labels.empty());
+    EXPECT_EQ(0, stats.mergeGroups);
+    EXPECT_EQ(3, stats.mergedSegments);
+    params.mergeStrategy = LSDAdvance::MERGE_LONGEST_FIRST;
+    stage.apply(segments, lsda::GroupingParams(), params, Mat(), merged, stats);
+    EXPECT_EQ(1u, merged.size());
+    stage.labels(labels);
+    EXPECT_EQ(std::vector<int>({ 0, 0, 0 }), labels);
 }
 
 }} // namespace

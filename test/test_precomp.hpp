@@ -13,12 +13,63 @@
 #include "../src/stages.hpp"
 #include "opencv_lsd_oracle.hpp"
 
+#include <chrono>
 #include <functional>
+#include <mutex>
 #include <numeric>
+#include <set>
+#include <thread>
 
 namespace opencv_test {
 using namespace cv::ximgproc;
 using namespace cv::ximgproc::line_evaluation;
+
+//! The number of threads of cv::parallel_for_ for the scope of the object, the previous one restored
+//! when it ends (a failed ASSERT included). The count is set whatever the cores: OpenCV's pool
+//! runs that many threads on a one-core machine too, so that a test over several counts proves
+//! its point on any runner (threadCountsToCompare).
+class ThreadCount
+{
+public:
+    explicit ThreadCount(int threads) : previous(getNumThreads()) { set(threads); }
+    ~ThreadCount() { setNumThreads(previous); }
+    void set(int threads)
+    {
+        setNumThreads(threads);
+        CV_Assert(getNumThreads() == threads);
+    }
+
+private:
+    ThreadCount(const ThreadCount&) = delete;
+    ThreadCount& operator=(const ThreadCount&) = delete;
+    const int previous;
+};
+
+//! The thread counts a test of "the same output for any number of threads" compares: 1 first (the
+//! reference), then counts that split the tasks differently, more than the cores of any runner.
+inline std::vector<int> threadCountsToCompare()
+{
+    return { 1, 2, 3, 8 };
+}
+
+//! Expects cv::parallel_for_ to run tasks on several threads at once with two threads: without
+//! that, a comparison of thread counts splits the work differently but never races.
+inline void expectParallelForRunsTasksAtOnce()
+{
+    const ThreadCount two(2);
+    std::mutex lock;
+    std::set<std::thread::id> threads;
+    parallel_for_(Range(0, 64), [&](const Range& tasks) {
+        for (int t = tasks.start; t < tasks.end; t++)
+        {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            std::lock_guard<std::mutex> hold(lock);
+            threads.insert(std::this_thread::get_id());
+        }
+    }, 64);
+    EXPECT_GT(threads.size(), 1u) << "cv::parallel_for_ ran every task on one thread: this runner cannot show "
+                                     "that the output does not depend on the threads";
+}
 
 //! Undirected angle of a segment in degrees, in [0, 180).
 inline double undirectedAngle(const Vec4f& s)

@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Accuracy and sequence behaviour on the real evaluation data (../shared/data), whose folder
+// Accuracy and sequence behaviour on the real evaluation data (doc/data.md), whose folder
 // is given by LSD_ADVANCE_DATA_DIR. Without it the tests are skipped, except under CI=true,
 // where they fail.
 

@@ -6,12 +6,14 @@
 // segments -> KeyLines -> LBD descriptors -> mutual nearest neighbours under a Hamming-distance
 // bound; and a point-line SLAM front end's rules (minimum length, line budget, one-way matching
 // under Hamming, endpoint-shift and angle gates) for the benchmark's front-end mode.
-// OpenCV's line_descriptor does the describing and matching; only the filtering of its lines and
-// matches is here.
+// The module's computeLBD describes (line_descriptor's descriptors, byte for byte; its
+// BinaryDescriptor::compute is timed beside it) and line_descriptor's matcher matches; only the
+// filtering of the lines and matches is here.
 
 #ifndef OPENCV_LSD_ADVANCE_APPS_LINE_MATCHING_HPP
 #define OPENCV_LSD_ADVANCE_APPS_LINE_MATCHING_HPP
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/line_descriptor.hpp>
 #include <opencv2/lsd_advance.hpp>
 #include <opencv2/lsd_advance/keylines.hpp>
@@ -36,15 +38,59 @@ struct DescribedLines
     cv::Mat descriptors;
 };
 
-//! KeyLines (as LSDAdvance::detect(image, keylines) makes them) and LBD descriptors of segments.
+//! KeyLines (as LSDAdvance::detect(image, keylines) makes them) and their LBD descriptors, by the
+//! module's computeLBD: those of line_descriptor's BinaryDescriptor::compute.
 inline DescribedLines describeLines(const cv::Mat& gray, const std::vector<cv::Vec4f>& lines)
 {
     DescribedLines described;
     described.lines = lines;
     cv::ximgproc::linesToKeyLines(lines, gray.size(), described.keylines);
-    if (!described.keylines.empty())
-        cv::line_descriptor::BinaryDescriptor::createBinaryDescriptor()->compute(gray, described.keylines,
-                                                                               described.descriptors);
+    cv::ximgproc::computeLBD(gray, described.keylines, described.descriptors);
+    return described;
+}
+
+//! Milliseconds of each description (KeyLines and descriptors) of the same lines: describeLines()
+//! (computeLBD), and the same with line_descriptor's BinaryDescriptor::compute, the LBD of the
+//! front ends built on line_descriptor.
+struct LbdTimes
+{
+    std::vector<double> computeLbd, lineDescriptor;
+};
+
+//! describeLines(), timed, and line_descriptor's description of the same lines, timed, in
+//! alternating order from call to call; throws when the two descriptors differ.
+inline DescribedLines describeLinesTimed(const cv::Mat& gray, const std::vector<cv::Vec4f>& lines, LbdTimes& times)
+{
+    DescribedLines described;
+    cv::Mat reference;
+    cv::TickMeter ours, theirs;
+    const auto describeOurs = [&] {
+        ours.start();
+        described = describeLines(gray, lines);
+        ours.stop();
+    };
+    const auto describeTheirs = [&] {
+        theirs.start();
+        std::vector<cv::line_descriptor::KeyLine> keylines;
+        cv::ximgproc::linesToKeyLines(lines, gray.size(), keylines);
+        if (!keylines.empty())  // it prints an error on none
+            cv::line_descriptor::BinaryDescriptor::createBinaryDescriptor()->compute(gray, keylines, reference);
+        theirs.stop();
+    };
+    if (times.computeLbd.size() % 2 == 0)
+    {
+        describeOurs();
+        describeTheirs();
+    }
+    else
+    {
+        describeTheirs();
+        describeOurs();
+    }
+    if (!lines.empty() && cv::norm(described.descriptors, reference, cv::NORM_HAMMING) != 0)
+        CV_Error(cv::Error::StsInternal, "computeLBD's descriptors differ from line_descriptor's on the same KeyLines");
+    times.computeLbd.push_back(ours.getTimeMilli());
+    times.lineDescriptor.push_back(theirs.getTimeMilli());
     return described;
 }
 

@@ -3,8 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // The line detectors that the benchmark apps and the perf suite compare, by name. Every
-// LSDAdvance variant is a parameters file of the methods folder, methods/<name>.yml: what
-// Algorithm::save() writes, plus the title the tables print. The other detectors, OpenCV's as
+// LSDAdvance variant is a parameters file of the methods folder, methods/<name>.yml: a preset, the
+// parameters that differ from it (keys of LSDAdvance::write()), and the title the tables print. The other detectors, OpenCV's as
 // they are and the optional peer ELSED, are constructed here.
 
 #ifndef OPENCV_LSD_ADVANCE_APPS_LINE_METHODS_HPP
@@ -23,6 +23,7 @@
 #endif
 
 #include <algorithm>
+#include <climits>
 #include <functional>
 #include <memory>
 #include <string>
@@ -122,43 +123,135 @@ inline LineMethod fldHalfMethod()
     });
 }
 
-//! The LSDAdvance variant of methods/<name>.yml; params, when given, are read on top of it.
+//! The presets a method file starts from, by the names of LSDAdvance::Preset.
+inline std::vector<std::pair<std::string, cv::ximgproc::LSDAdvance::Preset> > lsdAdvancePresets()
+{
+    using cv::ximgproc::LSDAdvance;
+    return { { "PRESET_MOST_ACCURATE", LSDAdvance::PRESET_MOST_ACCURATE }, { "PRESET_FASTEST", LSDAdvance::PRESET_FASTEST },
+             { "PRESET_PAPER", LSDAdvance::PRESET_PAPER }, { "PRESET_SEQUENCE", LSDAdvance::PRESET_SEQUENCE },
+             { "PRESET_FRONT_END", LSDAdvance::PRESET_FRONT_END } };
+}
+
+//! What LSDAdvance::write() writes of a detector (the full set of its parameters), to be read back.
+inline cv::FileStorage writtenParameters(const cv::ximgproc::LSDAdvance& detector)
+{
+    cv::FileStorage out(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
+    detector.write(out);
+    return cv::FileStorage(out.releaseAndGetString(), cv::FileStorage::READ | cv::FileStorage::MEMORY);
+}
+
+//! The keys of `full` whose values differ from those of `base`, each with its value, written to
+//! `out` when it is open (the maps of the base detectors' parameters only with a key that differs);
+//! returns how many differ.
+inline int writeDifferences(const cv::FileNode& full, const cv::FileNode& base, cv::FileStorage* out)
+{
+    int count = 0;
+    for (cv::FileNodeIterator it = full.begin(); it != full.end(); ++it)
+    {
+        const cv::FileNode value = *it, other = base[value.name()];
+        if (value.isMap())
+        {
+            const int inside = writeDifferences(value, other, nullptr);
+            if (inside > 0 && out)
+            {
+                *out << value.name() << "{";
+                writeDifferences(value, other, out);
+                *out << "}";
+            }
+            count += inside;
+            continue;
+        }
+        const bool same = value.isString() ? other.isString() && (std::string)value == (std::string)other
+                          : value.isInt()  ? other.isInt() && (int)value == (int)other
+                                           : other.isReal() && (double)value == (double)other;
+        if (same)
+            continue;
+        count++;
+        if (!out)
+            continue;
+        if (value.isString())
+            *out << value.name() << (std::string)value;
+        else if (value.isInt())
+            *out << value.name() << (int)value;
+        else
+            *out << value.name() << (double)value;
+    }
+    return count;
+}
+
+//! The detector of a preset, by its name in a file (`preset:`); empty for an unknown name.
+inline cv::Ptr<cv::ximgproc::LSDAdvance> lsdAdvanceOfPreset(const cv::FileNode& name)
+{
+    for (const auto& preset : lsdAdvancePresets())
+        if (name.isString() && preset.first == (std::string)name)
+            return cv::ximgproc::createLSDAdvance(preset.second);
+    return cv::Ptr<cv::ximgproc::LSDAdvance>();
+}
+
+//! The LSDAdvance variant of methods/<name>.yml: the file's preset, then the parameters it sets
+//! (those that differ from the preset's). params, when given, are read on top of it: a method file
+//! (its preset, then its parameters), what Algorithm::save() writes, or what write() writes.
 inline LineMethod lsdAdvanceMethod(const std::string& name, const cv::FileNode& params)
 {
     const std::vector<std::string> known = lineMethodNames();
     if (std::find(known.begin(), known.end(), name) == known.end())
         CV_Error_(cv::Error::StsBadArg, ("unknown method '%s'; known: %s", name.c_str(), lineMethodList().c_str()));
     const std::string path = cv::utils::fs::join(lineMethodsFolder(), name + ".yml");
-    const cv::Ptr<cv::ximgproc::LSDAdvance> detector = cv::ximgproc::createLSDAdvance();
     const cv::FileStorage file(path, cv::FileStorage::READ);
+    const std::string title = file["title"].isString() ? (std::string)file["title"] : std::string();
+    cv::Ptr<cv::ximgproc::LSDAdvance> detector = lsdAdvanceOfPreset(file["preset"]);
+    if (!detector || title.empty())
+        CV_Error_(cv::Error::StsParseError, ("the method file %s needs a 'preset' (a name of LSDAdvance::Preset) and a "
+                                             "'title'", path.c_str()));
     const cv::FileNode variant = file[detector->getDefaultName()];
-    const std::string title = file["title"].empty() ? std::string() : (std::string)file["title"];
-    if (variant.empty() || title.empty())
-        CV_Error_(cv::Error::StsParseError, ("the method file %s needs a map '%s' (LSDAdvance::save()) and a 'title'",
-                                             path.c_str(), detector->getDefaultName().c_str()));
-    detector->read(variant);
+    if (!variant.empty())
+        detector->read(variant);
     if (!params.empty())
     {
-        // Algorithm::save() nests the parameters under the algorithm's name; write() does not.
+        if (!params["preset"].empty() && !(detector = lsdAdvanceOfPreset(params["preset"])))
+            CV_Error(cv::Error::StsParseError, "the parameters' 'preset' is not a name of LSDAdvance::Preset");
+        // Algorithm::save() and a method file nest the parameters under the algorithm's name; write() does not.
         const cv::FileNode named = params[detector->getDefaultName()];
-        detector->read(named.empty() ? params : named);
+        if (!named.empty() || params["preset"].empty())
+            detector->read(named.empty() ? params : named);
     }
     return LineMethod{ title,
                        [detector](const cv::Mat& gray, std::vector<cv::Vec4f>& lines) { detector->detect(gray, lines); },
                        [detector] { detector->reset(); }, detector };
 }
 
-//! Writes an LSDAdvance method as a method file: Algorithm::save()'s map, then the title.
-//! A method file is canonical when this writes it again unchanged.
+//! Writes an LSDAdvance method as a method file: the preset it differs least from, the parameters
+//! that differ from it (LSDAdvance::write()'s keys), then the title. A method file is canonical
+//! when this writes it again unchanged; adding a parameter changes none (its value is the presets').
 inline void writeLineMethod(const std::string& path, const LineMethod& method)
 {
     CV_Assert(method.lsdAdvance);
+    const cv::FileStorage full = writtenParameters(*method.lsdAdvance);
+    std::string nearest;
+    cv::FileStorage nearestParameters;
+    int fewest = INT_MAX;
+    for (const auto& preset : lsdAdvancePresets())
+    {
+        cv::FileStorage presetParameters = writtenParameters(*cv::ximgproc::createLSDAdvance(preset.second));
+        const int count = writeDifferences(full.root(), presetParameters.root(), nullptr);
+        if (count < fewest)
+        {
+            fewest = count;
+            nearest = preset.first;
+            nearestParameters = presetParameters;
+        }
+    }
     cv::FileStorage file(path, cv::FileStorage::WRITE);
     if (!file.isOpened())
         CV_Error_(cv::Error::StsError, ("cannot write %s", path.c_str()));
-    file << method.lsdAdvance->getDefaultName() << "{";
-    method.lsdAdvance->write(file);
-    file << "}" << "title" << method.name;
+    file << "preset" << nearest;
+    if (fewest > 0)
+    {
+        file << method.lsdAdvance->getDefaultName() << "{";
+        writeDifferences(full.root(), nearestParameters.root(), &file);
+        file << "}";
+    }
+    file << "title" << method.name;
 }
 
 //! One of lineMethodNames(); params, when given, configure the method "lsdadvance" (and only it).

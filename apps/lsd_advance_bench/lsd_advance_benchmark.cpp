@@ -429,7 +429,8 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
         if (withPoses)
             for (const char* h : { "consistent / pair", "undecidable / pair", "precision (consistent / decidable)" })
                 table.header.push_back(h);
-        for (const char* h : { "tracks / frame", "track length (frames, mean)", "tracks >= 5 frames" })
+        for (const char* h : { "tracks / frame", "track length (frames, mean)", "tracks >= 5 frames",
+                               "computeLBD ms / frame (median)", "line_descriptor LBD ms / frame (median)" })
             table.header.push_back(h);
     }
     // Per budget b and method m, at b * methods.size() + m.
@@ -437,6 +438,7 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
     std::vector<MatchTotals> totals(runs);
     std::vector<LineTracks> tracks(runs);
     std::vector<DescribedLines> previous(runs);
+    std::vector<LbdTimes> lbd(runs);
 #else
     CV_UNUSED(matching);
 #endif
@@ -459,7 +461,8 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
             for (size_t b = 0; b < matching.budgets.size(); b++)
             {
                 const size_t r = b * methods.size() + m;
-                DescribedLines current = describeLines(gray, budgetLines(methods[m], gray, lines, matching, matching.budgets[b]));
+                DescribedLines current =
+                    describeLinesTimed(gray, budgetLines(methods[m], gray, lines, matching, matching.budgets[b]), lbd[r]);
                 std::vector<DMatch> matches;
                 if (k > 0)
                 {
@@ -507,7 +510,8 @@ Table benchmarkSequence(const std::vector<LineMethod>& methods, const SequenceDa
                                                  format("%.3f", t.precision()) })
                     row.push_back(cell);
             for (const std::string& cell : { format("%.1f", tracks[r].perFrame()), format("%.2f", tracks[r].meanLength()),
-                                             format("%d", tracks[r].atLeast(5)) })
+                                             format("%d", tracks[r].atLeast(5)), format("%.2f", median(lbd[r].computeLbd)),
+                                             format("%.1f", median(lbd[r].lineDescriptor)) })
                 row.push_back(cell);
 #endif
         }
@@ -522,7 +526,8 @@ const char* const kFrontEndReference = "PL-VINS LSD";
 struct FrontEndRun
 {
     std::vector<double> detected, kept, matches, consistent, undecidable;  // per frame (matches: per pair)
-    std::vector<double> detectMs, keepMs, lbdMs, matchMs, totalMs;    // per frame
+    std::vector<double> detectMs, keepMs, matchMs, totalMs;                // per frame
+    LbdTimes lbd;                                                          // per frame, both LBDs
     double consistentSum = 0, decidedSum = 0;
     LineTracks tracks;
     // The diagnostics, pooled over the pairs: the current frame's kept lines ...
@@ -633,7 +638,7 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
         for (size_t m = 0; m < methods.size(); m++)
         {
             FrontEndRun& run = runs[m];
-            TickMeter detectTime, keepTime, lbdTime, matchTime;
+            TickMeter detectTime, keepTime, matchTime;
             std::vector<Vec4f> detected;
             detectTime.start();
             methods[m].detect(gray, detected);
@@ -641,9 +646,7 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
             keepTime.start();
             const std::vector<Vec4f> kept = frontEndLines(gray, detected, params);
             keepTime.stop();
-            lbdTime.start();
-            const DescribedLines current = describeLines(gray, kept);
-            lbdTime.stop();
+            const DescribedLines current = describeLinesTimed(gray, kept, run.lbd);
             std::vector<DMatch> matches;
             matchTime.start();
             if (k > 0)
@@ -654,9 +657,10 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
             run.kept.push_back((double)kept.size());
             run.detectMs.push_back(detectTime.getTimeMilli());
             run.keepMs.push_back(keepTime.getTimeMilli());
-            run.lbdMs.push_back(lbdTime.getTimeMilli());
             run.matchMs.push_back(matchTime.getTimeMilli());
-            run.totalMs.push_back(run.detectMs.back() + run.keepMs.back() + run.lbdMs.back() + run.matchMs.back());
+            // The LBD each front end runs: computeLBD with the module's lines, line_descriptor's with the others'.
+            const double lbdMs = methods[m].lsdAdvance ? run.lbd.computeLbd.back() : run.lbd.lineDescriptor.back();
+            run.totalMs.push_back(run.detectMs.back() + run.keepMs.back() + lbdMs + run.matchMs.back());
             if (k > 0)
             {
                 std::vector<int> verdicts;
@@ -700,7 +704,8 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
             figures.header.push_back(h);
     for (const std::string& h : { format("tracks >= %d frames", trackFrames), std::string("track length (frames, mean)"),
                                   std::string("detect ms"),
-                                  std::string("keep ms"), std::string("LBD ms"), std::string("match ms"),
+                                  std::string("keep ms"), std::string("computeLBD ms"),
+                                  std::string("line_descriptor LBD ms"), std::string("match ms"),
                                   std::string("total ms"), std::string("total / ") + kFrontEndReference })
         figures.header.push_back(h);
     why.header = { "method", "kept lines without a candidate", "of them, one among all long-enough",
@@ -730,7 +735,8 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
         for (const std::string& cell :
              { format("%d", run.tracks.atLeast(trackFrames)), format("%.2f", run.tracks.meanLength()),
                format("%.1f", median(run.detectMs)),
-               format("%.2f", median(run.keepMs)), format("%.1f", median(run.lbdMs)),
+               format("%.2f", median(run.keepMs)), format("%.2f", median(run.lbd.computeLbd)),
+               format("%.1f", median(run.lbd.lineDescriptor)),
                format("%.2f", median(run.matchMs)), format("%.1f", median(run.totalMs)), ratio })
             row.push_back(cell);
         figures.rows.push_back(row);
@@ -750,18 +756,65 @@ std::pair<Table, Table> benchmarkFrontEnd(const std::vector<LineMethod>& methods
 #endif
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+// The LBD mode: each method's lines of each image described by the module's computeLBD and by
+// line_descriptor's BinaryDescriptor::compute, the same KeyLines, `repeats` times each in
+// alternating order (their medians per image; the descriptors compared every time).
+void printLbdNote(int repeats)
+{
+    std::cout << "LBD: each method's lines of each image (as KeyLines) described by computeLBD and by "
+                 "line_descriptor's BinaryDescriptor::compute, " << repeats << " time(s) each, alternating, "
+                 "the same descriptors; medians per image, then over images\n\n";
+}
+
+Table benchmarkLbd(const std::vector<LineMethod>& methods, const std::vector<String>& imagePaths, int repeats)
+{
+    Table table;
+    table.header = { "method", "lines / image (median)", "computeLBD ms / image (median)",
+                     "line_descriptor LBD ms / image (median)", "computeLBD / line_descriptor (median)" };
+    std::vector<std::vector<double> > counts(methods.size()), ours(methods.size()), theirs(methods.size()),
+        ratios(methods.size());
+    for (const LineMethod& m : methods)
+        m.reset();
+    for (size_t k = 0; k < imagePaths.size(); k++)
+    {
+        std::cerr << "\r[lbd] image " << k + 1 << "/" << imagePaths.size() << std::flush;
+        const Mat gray = imread(imagePaths[k], IMREAD_GRAYSCALE);
+        CV_Assert(!gray.empty());
+        for (size_t m = 0; m < methods.size(); m++)
+        {
+            std::vector<Vec4f> lines;
+            methods[m].detect(gray, lines);
+            LbdTimes times;
+            for (int r = 0; r < repeats; r++)
+                describeLinesTimed(gray, lines, times);
+            counts[m].push_back((double)lines.size());
+            ours[m].push_back(median(times.computeLbd));
+            theirs[m].push_back(median(times.lineDescriptor));
+            if (!lines.empty())
+                ratios[m].push_back(ours[m].back() / theirs[m].back());
+        }
+    }
+    std::cerr << "\n";
+    for (size_t m = 0; m < methods.size(); m++)
+        table.rows.push_back({ methods[m].name, format("%.0f", median(counts[m])), format("%.2f", median(ours[m])),
+                               format("%.2f", median(theirs[m])), format("%.3f", median(ratios[m])) });
+    return table;
+}
+
 Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vector<HomographyPair>& pairs,
                           const LineMatchOptions& matching, int repeats)
 {
     Table table;
     table.header = { "method", "segments / image", "matches / pair", "correct / pair", "precision",
-                     "repeatability", "localisation error (px)", "ms / image (median)" };
+                     "repeatability", "localisation error (px)", "ms / image (median)",
+                     "computeLBD ms / image (median)", "line_descriptor LBD ms / image (median)" };
     if (budgetColumn(matching))
         table.header.insert(table.header.begin() + 1, "lines / image (budget)");
     // Per budget b and method m, at b * methods.size() + m.
     const size_t runs = matching.budgets.size() * methods.size();
     std::vector<MatchTotals> totals(runs);
     std::vector<double> segments(runs, 0.0);
+    std::vector<LbdTimes> lbd(runs);
     std::vector<std::vector<double> > ms(methods.size());
     for (size_t k = 0; k < pairs.size(); k++)
     {
@@ -780,8 +833,9 @@ Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vec
                 const std::vector<Vec4f> kept1 = budgetLines(methods[m], gray1, lines1, matching, matching.budgets[b]);
                 const std::vector<Vec4f> kept2 = budgetLines(methods[m], gray2, lines2, matching, matching.budgets[b]);
                 segments[r] += (double)(kept1.size() + kept2.size());
-                const std::vector<DMatch> matches =
-                    matchLines(describeLines(gray1, kept1), describeLines(gray2, kept2), matching.params);
+                const DescribedLines described1 = describeLinesTimed(gray1, kept1, lbd[r]);
+                const DescribedLines described2 = describeLinesTimed(gray2, kept2, lbd[r]);
+                const std::vector<DMatch> matches = matchLines(described1, described2, matching.params);
                 totals[r].addHomography(
                     evaluateHomographyMatches(kept1, kept2, matches, pairs[k].H, gray1.size(), gray2.size()));
             }
@@ -797,7 +851,8 @@ Table benchmarkHomography(const std::vector<LineMethod>& methods, const std::vec
                                    format("%.1f", t.perPair(t.matches)), format("%.1f", t.perPair(t.correct)),
                                    format("%.3f", t.precision()), format("%.3f", t.visible > 0 ? t.repeated / t.visible : 0.0),
                                    format("%.2f", t.repeated > 0 ? t.errorSum / t.repeated : 0.0),
-                                   format("%.1f", median(ms[m])) });
+                                   format("%.1f", median(ms[m])), format("%.2f", median(lbd[r].computeLbd)),
+                                   format("%.1f", median(lbd[r].lineDescriptor)) });
             if (budgetColumn(matching))
                 table.rows.back().insert(table.rows.back().begin() + 1, format("%d", matching.budgets[b]));
         }
@@ -946,7 +1001,7 @@ int run(const AppOptions& args)
     if (dataset == "homography" || dataset == "stereo" || dataset == "multiview")
         throw std::runtime_error("--dataset=" + dataset + " needs OpenCV's line_descriptor module, absent from this build");
 #endif
-    const bool frontEnd = args.has("frontend");
+    const bool frontEnd = args.has("frontend"), lbd = args.has("lbd");
     FrontEndParams frontEndParams;
     int trackFrames = 5;
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
@@ -960,9 +1015,11 @@ int run(const AppOptions& args)
     frontEndParams.maxShift = args.number("max-shift", 0, kUnbounded, true);
     frontEndParams.maxAngle = args.number("max-angle", 0, CV_PI, true);
     trackFrames = args.integer("track-frames", 2);
+    if (lbd && (frontEnd || dataset == "homography"))
+        throw std::runtime_error("--lbd needs --dataset=yorkurban or sequence, without --frontend");
 #else
-    if (frontEnd)
-        throw std::runtime_error("--frontend needs OpenCV's line_descriptor module, absent from this build");
+    if (frontEnd || lbd)
+        throw std::runtime_error("--frontend and --lbd need OpenCV's line_descriptor module, absent from this build");
 #endif
     setNumThreads(args.integer("threads", 1, 1024));
     // Every option is checked before the first error is reported on the data.
@@ -1005,7 +1062,18 @@ int run(const AppOptions& args)
                   << " thread(s), median of " << repeats << " run(s) per image"
                   << (skipped ? format(", %zu unreadable skipped", skipped) : std::string()) << "\n\n";
         runInfo = format("YorkUrban, %zu images (%s), %d thread(s)", images.size(), subset.c_str(), getNumThreads());
-        table = benchmarkYorkUrban(methods, images, repeats, longLength);
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+        if (lbd)
+        {
+            printLbdNote(repeats);
+            std::vector<String> paths;
+            for (const LabelledImage& image : images)
+                paths.push_back(image.imagePath);
+            table = benchmarkLbd(methods, paths, repeats);
+        }
+        else
+#endif
+            table = benchmarkYorkUrban(methods, images, repeats, longLength);
     }
     else if (dataset == "sequence")
     {
@@ -1031,7 +1099,10 @@ int run(const AppOptions& args)
         {
             std::cout << format("Front end: lines of at least max(%g px, %g min(W, H)), the %d of highest %s (0: all), "
                                 "LBD on them, one-way matching to the previous frame's with Hamming < %d, endpoint "
-                                "shifts < %g px, angle < %g rad%s; medians per frame (matches: per pair)\n\n",
+                                "shifts < %g px, angle < %g rad%s; medians per frame (matches: per pair); LBD "
+                                "timed twice on the same lines, the module's computeLBD and line_descriptor's "
+                                "BinaryDescriptor::compute (the same descriptors), the total with computeLBD for "
+                                "LSDAdvance's lines and line_descriptor's for the others, as each front end runs\n\n",
                                 frontEndParams.minLength, frontEndParams.minLengthRatio, frontEndParams.maxLines,
                                 frontEndParams.rankByLength ? "length" : "response", frontEndParams.maxHamming,
                                 frontEndParams.maxShift, frontEndParams.maxAngle,
@@ -1050,7 +1121,15 @@ int run(const AppOptions& args)
             return skipped == 0 ? 0 : kExitSkipped;
         }
 #endif
-        table = benchmarkSequence(methods, sequence, longLength, matching);
+#ifdef HAVE_OPENCV_LINE_DESCRIPTOR
+        if (lbd)
+        {
+            printLbdNote(repeats);
+            table = benchmarkLbd(methods, sequence.imagePaths, repeats);
+        }
+        else
+#endif
+            table = benchmarkSequence(methods, sequence, longLength, matching);
     }
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
     else if (dataset == "stereo" || dataset == "multiview")
@@ -1140,6 +1219,10 @@ int main(int argc, char** argv)
                                   "(keep lines by --min-length, --min-length-ratio and the budget --max-lines, LBD on "
                                   "them, one-way matching to the previous frame's under the gates --max-hamming "
                                   "(below it), --max-shift and --max-angle, tracks) }"
+        "{lbd      |            | yorkurban or sequence: the LBD mode, each method's lines of each image described "
+                                  "by the module's computeLBD and by line_descriptor's BinaryDescriptor::compute (the "
+                                  "same KeyLines, --repeats times each, alternating; the descriptors compared), their "
+                                  "times and the median over images of their ratio }"
         "{min-length | 0        | front end: lines shorter than this many px are dropped, >= 0 }"
         "{min-length-ratio | 0.125 | front end: and those shorter than this times min(W, H), in [0, 1] }"
         "{max-lines | 60        | front end: the budget, the lines of highest --frontend-rank kept per frame (0: all), >= 0 }"
@@ -1167,7 +1250,7 @@ int main(int argc, char** argv)
                                   "the files methods/<name>.yml) }"
         "{params   |            | YAML/XML of LSDAdvance parameters (write() or save()) for the lsdadvance method }"
         "{subset   | all        | yorkurban images to use: all, even or odd (by index in list.txt) }"
-        "{repeats  | 1          | detections per image for the time (median), >= 1 }"
+        "{repeats  | 1          | detections per image for the time (median), >= 1; with --lbd, descriptions by each LBD }"
         "{threads  | 1          | cv::setNumThreads for the whole run, 1 to 1024 (times in the tables are one core by default) }"
         "{long     | 60         | length in pixels from which a segment is long, > 0 }"
         "{csv      |            | also write the table to this CSV file }"
@@ -1176,5 +1259,5 @@ int main(int argc, char** argv)
     const String about = "LSDAdvance benchmark, e.g. lsd_advance_benchmark --data=<YorkUrban folder>. Methods: " +
                          lineMethodList() +
                          ". Exit status: 0, 1 on an error, 2 when unreadable image files were left out.";
-    return runApp(argc, argv, keys, about, { "no-match", "frontend", "clahe" }, run);
+    return runApp(argc, argv, keys, about, { "no-match", "frontend", "clahe", "lbd" }, run);
 }

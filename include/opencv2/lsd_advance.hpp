@@ -21,7 +21,8 @@ FastLineDetector (@cite Lee14) or EdgeDrawing's EDLines (@cite akinlar2011edline
 code with one line; either of these two can also be its base detector.
 
 The module also gives its lines as line_descriptor KeyLines for the LBD descriptor
-(@cite LBD), and the evaluation tools behind its documented results: the structural
+(@cite LBD), computes that descriptor for KeyLines of any detector (computeLBD(): line_descriptor's
+descriptors, byte for byte, faster), and has the evaluation tools behind its documented results: the structural
 precision/recall protocol on YorkUrban-LineSegment (@cite Denis2008, @cite Cho2018), line
 matching under a homography (HPatches, @cite Balntas2017) and epipolar checks on calibrated
 sequences (KITTI, @cite Geiger2012).

@@ -2,9 +2,10 @@
 # This file is part of OpenCV project.
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
-"""Matches LSDAdvance's lines between two views with LBD (cv2.line_descriptor), as
-lsd_advance_lbd_matching.cpp does: mutual nearest neighbours within a Hamming distance and,
-given the homography from image 1 to image 2, the number of correct matches (doc/matching.md).
+"""Matches LSDAdvance's lines between two views with LBD (computeLBD: cv2.line_descriptor's
+descriptors, byte for byte, faster), as lsd_advance_lbd_matching.cpp does: mutual nearest
+neighbours within a Hamming distance (cv2.line_descriptor's matcher) and, given the homography
+from image 1 to image 2, the number of correct matches (doc/matching.md).
 
     python3 lsd_advance_lbd_matching.py graf1.png graf3.png --homography=H1to3p.xml
 """
@@ -25,7 +26,7 @@ def describe_lines(gray, lines):
     if lines is None or len(lines) == 0:
         return [], None
     keylines = lsda.linesToKeyLines(lines, (gray.shape[1], gray.shape[0]))
-    return cv2.line_descriptor.BinaryDescriptor_createBinaryDescriptor().compute(gray, keylines)
+    return keylines, lsda.computeLBD(gray, keylines)
 
 
 def match_lines(descriptors1, descriptors2, max_hamming=30):

@@ -190,6 +190,8 @@ APP_ERRORS = {
         (["--dataset=stereo", "--data={files}", "--seeds=0"], ["--seeds"]),
         (["--dataset=multiview", "--data={files}", "--scale=0"], ["--scale"]),
         (["--dataset=stereo", "--data={files}", "--pose-hamming=257"], ["--pose-hamming"]),
+        (["--dataset=sequence", "--data={files}", "--frontend", "--lbd"], ["--lbd", "--frontend"]),
+        (["--dataset=homography", "--data={files}", "--lbd"], ["--lbd", "--dataset=yorkurban or sequence"]),
     ],
     "lsd_advance_sweep": [
         ([], ["--data"]),
@@ -354,6 +356,23 @@ def test_front_end_on_kitti_keeps_at_most_the_budget_and_matches_at_most_its_lin
         assert int(row["tracks >= 5 frames"]) <= int(row["lines kept"])
     assert rows["PL-VINS LSD"]["total / PL-VINS LSD"] == "1.00"
     assert int(rows["PL-VINS LSD"]["matches"]) > 0
+    # Both LBDs timed on the same lines; the total counts line_descriptor's for the other detectors.
+    for row in rows.values():
+        assert float(row["computeLBD ms"]) > 0 and float(row["line_descriptor LBD ms"]) > 0
+    plvins = rows["PL-VINS LSD"]
+    assert float(plvins["line_descriptor LBD ms"]) <= float(plvins["total ms"])
+
+
+def test_lbd_mode_times_both_descriptors_on_each_methods_lines(still_frames, tmp_path):
+    result = run("lsd_advance_benchmark", ["--dataset=sequence", "--data=%s" % still_frames[4], "--lbd",
+                                           "--methods=lsd,lsdadvance_front_end", "--repeats=2"], tmp_path)
+    rows = markdown_table(succeeded(result))
+    assert set(rows) == {"LSD", "LSDAdvance (front-end preset)"}
+    assert int(rows["LSDAdvance (front-end preset)"]["lines / image (median)"]) == 60
+    for row in rows.values():
+        ours, theirs = float(row["computeLBD ms / image (median)"]), float(row["line_descriptor LBD ms / image (median)"])
+        assert ours > 0 and theirs > 0
+        assert float(row["computeLBD / line_descriptor (median)"]) > 0
 
 
 # --------------------------------------------------------------------------------------------
@@ -462,18 +481,33 @@ def test_a_method_file_is_what_write_writes_of_it(name, tmp_path):
 
 @pytest.mark.parametrize("name", sorted(PRESET_FILES))
 def test_a_method_file_named_after_a_preset_holds_the_preset(name, tmp_path):
-    """Every value of the file is the preset's. Compared as what this build writes of each, since
-    OpenCV versions print numbers differently (4.10: 8.0000000000000004e-01 for 4.6's
-    0.80000000000000004); that the file is, as text, what write() writes is the test above."""
+    """The file names its preset and sets no parameter of its own: what the apps read is the
+    preset's full set, compared as what this build writes of each."""
     path = os.path.join(METHODS, name + ".yml")
-    loaded = api.createLSDAdvance()
     storage = cv2.FileStorage(path, cv2.FILE_STORAGE_READ)
-    loaded.read(storage.getNode("LSDAdvance"))
+    assert storage.getNode("preset").string() == "PRESET_" + PRESET_FILES[name]
+    assert storage.getNode("LSDAdvance").empty()
     assert storage.getNode("title").string()
     storage.release()
-    loaded.save(str(tmp_path / "file.yml"))
-    api.createLSDAdvance(getattr(api, "LSDAdvance_PRESET_" + PRESET_FILES[name])).save(str(tmp_path / "preset.yml"))
-    assert (tmp_path / "file.yml").read_text() == (tmp_path / "preset.yml").read_text()
+
+
+@pytest.mark.parametrize("name", METHOD_FILES)
+def test_a_method_file_is_a_preset_and_the_parameters_that_differ(name, tmp_path):
+    """At most 15 lines: a preset, the keys of LSDAdvance::write() whose values differ from it,
+    the title. Read on top of its preset, the file gives every value the apps use (a key equal
+    to the preset's would be left out by --write-params, and the test above fails)."""
+    path = os.path.join(METHODS, name + ".yml")
+    assert len(open(path).read().splitlines()) <= 15
+    storage = cv2.FileStorage(path, cv2.FILE_STORAGE_READ)
+    preset = storage.getNode("preset").string()
+    assert preset.startswith("PRESET_")
+    detector = api.createLSDAdvance(getattr(api, "LSDAdvance_" + preset))
+    detector.save(str(tmp_path / "preset.yml"))
+    if not storage.getNode("LSDAdvance").empty():
+        detector.read(storage.getNode("LSDAdvance"))
+    storage.release()
+    detector.save(str(tmp_path / "file.yml"))
+    assert ((tmp_path / "file.yml").read_text() == (tmp_path / "preset.yml").read_text()) == (name in PRESET_FILES)
 
 
 def test_write_params_writes_a_method_file_that_params_reads_back(tmp_path):

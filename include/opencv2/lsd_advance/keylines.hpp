@@ -54,7 +54,9 @@ width - 1 (height - 1); then `startPoint*` and
 `sPointInOctave*` are the first endpoint, `endPoint*` and `ePointInOctave*` the second, `pt` the
 midpoint, `lineLength` the length in pixels, `angle` = atan2(dy, dx) in radians in (-pi, pi],
 `size` = dx * dy (LSDDetector's definition, signed), `numOfPixels` the number of pixels of the
-8-connected digital line between the endpoints, `octave` 0, `class_id` the index of the segment
+8-connected digital line between the endpoints rounded to pixels, at least 1 (LSDDetector counts 0
+for a line along the last column or row whose endpoints round to just outside the image; here its
+endpoints are then moved onto the image's last pixels), `octave` 0, `class_id` the index of the segment
 (0..N-1, contiguous: LBD needs it; keepStrongestKeyLines() keeps it so),
 and `response` = lineLength / max(width, height), in [0, sqrt(2)], as LSDDetector sets it (the
 length alone: these are lines without their image; LSDAdvance::detect(image, keylines) sets
@@ -76,6 +78,39 @@ Throws cv::Exception on a negative maxLines.
 */
 CV_EXPORTS_W void keepStrongestKeyLines(const std::vector<line_descriptor::KeyLine>& keylines, int maxLines,
                                         CV_OUT std::vector<line_descriptor::KeyLine>& kept);
+
+/** @brief Computes the binary LBD descriptors (@cite LBD) of KeyLines: those of
+cv::line_descriptor::BinaryDescriptor::compute with its default parameters, byte for byte, in a
+fraction of its time (doc/matching.md).
+
+@param image The image the KeyLines were detected in: 8-bit gray, BGR or BGRA, not empty (colour
+is converted to gray as BinaryDescriptor converts it).
+@param keylines KeyLines of octave 0 (LSDAdvance::detect(image, keylines), linesToKeyLines(),
+cv::line_descriptor::LSDDetector or BinaryDescriptor::detect with one octave), each with:
+`sPointInOctave*` / `ePointInOctave*` equal to `startPoint*` / `endPoint*`, two distinct endpoints
+within the image and one pixel around it (x in [-1, W], y in [-1, H]), a finite `angle` (radians,
+the direction of the line: LBD measures the gradient along it and across it) and `numOfPixels`
+in [1, 32767] (the length of the support region in samples, 1 px apart). `class_id`, `response`,
+`size` and `lineLength` are not read: each KeyLine is described on its own (BinaryDescriptor
+needs distinct `class_id` values, and describes only one KeyLine of each).
+@param descriptors Output N x 32 CV_8U, row i the 256-bit descriptor of keylines[i] (0 x 32 for
+no KeyLine), for cv::line_descriptor::BinaryDescriptorMatcher or any NORM_HAMMING matcher.
+
+The 63-row support region of each line is sampled as BinaryDescriptor samples it (9 bands of 7
+rows, coordinates rounded to the nearest pixel and clamped into the image), on the gradient of
+the image after a 5 x 5 Gaussian of sigma 1, computed only where some region reaches; the lines
+are described in parallel (cv::parallel_for_), with the same output for any number of threads.
+A thread's buffers are kept for its next call: a sequence of frames of one size allocates
+nothing but the output once warm. Safe to call from several threads at once.
+
+Throws cv::Exception on an empty image or another image type, and on a KeyLine of another octave
+(StsNotImplemented: describe a multi-octave pyramid with BinaryDescriptor), with a coordinate or
+angle that is not finite, outside the image, of zero length, or with numOfPixels out of range:
+the message names the KeyLine's index.
+In Python: computeLBD(image, keylines) -> descriptors.
+*/
+CV_EXPORTS_W void computeLBD(InputArray image, const std::vector<line_descriptor::KeyLine>& keylines,
+                             OutputArray descriptors);
 
 /** @brief Converts KeyLines back to segments.
 

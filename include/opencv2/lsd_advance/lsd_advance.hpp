@@ -198,6 +198,18 @@ public:
         GROWTH_PER_NEIGHBOURHOOD = 1
     };
 
+    /** @brief Which images LSDParams::fullScaleSigma's Gaussian smooths before an LSD base reads them
+    at scale 1 (LSDParams::fullScaleSmoothing). */
+    enum FullScaleSmoothing
+    {
+        SMOOTH_EVERY_IMAGE = 0,   //!< every image
+        /** only an image whose edges are mostly steps of one pixel, as where it was drawn or rendered
+        without anti-aliasing or enlarged without interpolation (the test: doc/algorithm.md, "Base
+        detectors"); a photograph, whose optics spread its edges over more pixels, is read as it is,
+        as with fullScaleSigma 0 (default) */
+        SMOOTH_ALIASED_IMAGES = 1
+    };
+
     /** @brief The detector of stage 0. Every base gives segments oriented brighter side on the
     left (EDLines' are turned round where needed). */
     enum BaseDetector
@@ -264,7 +276,7 @@ public:
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
     LineSegmentDetector) and BASE_FAST_LSD, with the meaning of cv::createLineSegmentDetector's arguments,
-    a pre-smoothing at scale 1 for both (fullScaleSigma), and four of BASE_FAST_LSD's own
+    a pre-smoothing at scale 1 for both (fullScaleSigma, fullScaleSmoothing), and four of BASE_FAST_LSD's own
     (seedGradientRatio, seedAlignedNeighbours, tileHeight, regionGrowth). */
     struct CV_EXPORTS_W_SIMPLE LSDParams
     {
@@ -272,7 +284,8 @@ public:
         CV_PROP_RW int refine;              //!< one of cv::LineSegmentDetectorModes. Default LSD_REFINE_NONE.
         CV_PROP_RW double scale;            //!< scale at which the image is read; the segments are returned in the full image's coordinates (pixel centres, see "Coordinates": unlike OpenCV's LSD below scale 1), in (0, 1]. Default 1.
         CV_PROP_RW double sigmaScale;       //!< Gaussian sigma = sigmaScale / scale, used when scale < 1, in (0, 100]. Default 0.6.
-        CV_PROP_RW double fullScaleSigma;   //!< sigma of a Gaussian applied at scale 1 (at scale < 1 the one of sigmaScale smooths), pixels: more of the gradients of staircase edges (lines drawn without anti-aliasing, rendered frames) then agree within angleTolerance; 0 reads the image as the LSD algorithm does, in [0, 3]. Default 0.5.
+        CV_PROP_RW double fullScaleSigma;   //!< sigma of a Gaussian applied at scale 1 to the images of fullScaleSmoothing (at scale < 1 the one of sigmaScale smooths), pixels: more of the gradients of staircase edges (lines drawn without anti-aliasing, rendered frames) then agree within angleTolerance; 0 reads every image as the LSD algorithm does, in [0, 3]. Default 0.5.
+        CV_PROP_RW int fullScaleSmoothing;  //!< one of LSDAdvance::FullScaleSmoothing: the images fullScaleSigma smooths (SMOOTH_ALIASED_IMAGES reads a photograph as it is). Default SMOOTH_ALIASED_IMAGES.
         CV_PROP_RW double quant;            //!< bound to the gradient quantization error, gray levels, in [0, 255]. Default 2.
         CV_PROP_RW double angleTolerance;   //!< gradient angle tolerance, degrees, in (0, 180). Default 22.5.
         CV_PROP_RW double logEps;           //!< detection threshold -log10(NFA) with LSD_REFINE_ADV, in [-1000, 1000]. Default 0.
@@ -317,6 +330,18 @@ public:
     @param mask As for detect(InputArray, OutputArray, InputArray). */
     CV_WRAP_AS(detectKeyLines) void detect(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines,
                                            InputArray mask = noArray());
+
+    /** @brief Detects line segments as KeyLines and computes their binary LBD descriptors: detect(image,
+    keylines, mask), then computeLBD() on the same image (the descriptors of
+    cv::line_descriptor::BinaryDescriptor::compute, byte for byte). Include
+    opencv2/lsd_advance/keylines.hpp (or opencv2/lsd_advance.hpp) to call it.
+    @param image As for detect(InputArray, OutputArray).
+    @param keylines Output: as detect(InputArray, std::vector<KeyLine>&, InputArray) gives them.
+    @param descriptors Output N x 32 CV_8U, row i the descriptor of keylines[i].
+    @param mask As for detect(InputArray, OutputArray, InputArray).
+    In Python: detectAndCompute(image[, mask]) -> keylines, descriptors. */
+    CV_WRAP void detectAndCompute(InputArray image, CV_OUT std::vector<line_descriptor::KeyLine>& keylines,
+                                  OutputArray descriptors, InputArray mask = noArray());
 #endif
 
     /** @brief Runs stages 1-3 on segments from any detector; the call is a frame like detect().

@@ -426,7 +426,7 @@ class lsd_advance_test(NewOpenCVTests):
                         setattr(params, name, not value)
                     elif isinstance(value, float):
                         setattr(params, name, value * 0.9)
-                    elif name in ("seedAlignedNeighbours", "regionGrowth"):  # 0, 1 or 2; 0 or 1
+                    elif name in ("seedAlignedNeighbours", "regionGrowth", "fullScaleSmoothing"):  # 0, 1 or 2; 0 or 1
                         setattr(params, name, value - 1)
                     elif name not in ("refine", "EdgeDetectionOperator", "cannyApertureSize"):
                         setattr(params, name, value + 2 if value > 0 else 20)
@@ -834,6 +834,45 @@ class lsd_advance_test(NewOpenCVTests):
         keylines = cv.line_descriptor.LSDDetector_createLSDDetector().detect(self.small_building(), 1, 1)
         back = api.keyLinesToLines(keylines).reshape(-1, 4)
         self.assertEqual(back.tolist(), [[k.startPointX, k.startPointY, k.endPointX, k.endPointY] for k in keylines])
+
+    def test_computeLBD_gives_the_descriptors_of_BinaryDescriptor_compute(self):
+        building = self.building()
+        oracle = cv.line_descriptor.BinaryDescriptor_createBinaryDescriptor()
+        for preset in (api.LSDAdvance_PRESET_MOST_ACCURATE, api.LSDAdvance_PRESET_FRONT_END):
+            keylines = api.createLSDAdvance(preset).detectKeyLines(building)
+            descriptors = api.computeLBD(building, keylines)
+            self.assertEqual(descriptors.shape, (len(keylines), 32))
+            self.assertEqual(descriptors.dtype, np.uint8)
+            self.assertTrue(np.array_equal(descriptors, oracle.compute(building, keylines)[1]))
+        # LSDDetector's KeyLines too, and the colour image as BinaryDescriptor converts it.
+        colour = self.image("building.jpg", cv.IMREAD_COLOR)
+        keylines = [k for k in cv.line_descriptor.LSDDetector_createLSDDetector().detect(building, 1, 1)
+                    if k.numOfPixels > 0]
+        self.assertTrue(np.array_equal(api.computeLBD(colour, keylines), oracle.compute(colour, keylines)[1]))
+        self.assertIsNone(api.computeLBD(building, []))  # no KeyLine: an empty array, None as cv2 gives it
+
+    def test_detectAndCompute_is_detectKeyLines_then_computeLBD(self):
+        small = self.small_building()
+        keylines, descriptors = api.createLSDAdvance().detectAndCompute(small)
+        expected = api.createLSDAdvance().detectKeyLines(small)
+        self.assertEqual([(k.startPointX, k.endPointY) for k in keylines], [(k.startPointX, k.endPointY) for k in expected])
+        self.assertTrue(np.array_equal(descriptors, api.computeLBD(small, expected)))
+
+    def test_computeLBD_rejects_keylines_it_cannot_describe(self):
+        small = self.small_building()
+        keylines = api.createLSDAdvance().detectKeyLines(small)
+        keylines[2].octave = 1
+        with self.assertRaises(cv.error) as info:
+            api.computeLBD(small, keylines)
+        self.assertIn("KeyLine 2", str(info.exception))
+        self.assertIn("octave 0", str(info.exception))
+        keylines[2].octave = 0
+        keylines[3].endPointX = keylines[3].ePointInOctaveX = small.shape[1] + 5.0
+        with self.assertRaises(cv.error) as info:
+            api.computeLBD(small, keylines)
+        self.assertIn("outside", str(info.exception))
+        with self.assertRaises(cv.error):
+            api.computeLBD(np.zeros((20, 20), np.float32), keylines[:2])
 
     def test_keylines_go_into_lbd_and_match_graf1_to_graf3(self):
         grays = [self.image("graf1.png"), self.image("graf3.png")]

@@ -10,8 +10,8 @@
 #include "opencv2/ts.hpp"
 #include "opencv2/lsd_advance.hpp"
 #include "opencv2/imgcodecs.hpp"
-#include "../../src/opencv_lsd.hpp"
-#include "../../src/stages.hpp"
+#include "../../../src/opencv_lsd.hpp"
+#include "../../../src/stages.hpp"
 
 #include <type_traits>
 
