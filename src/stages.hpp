@@ -425,7 +425,7 @@ private:
     std::vector<int> order, rankInBin;
 };
 
-//--- LBD descriptors of KeyLines (lbd_descriptor.cpp)
+//--- LBD descriptors of KeyLines (lbd/)
 
 #ifdef HAVE_OPENCV_LINE_DESCRIPTOR
 //! The gradient computeLBD samples, over the whole image: CV_16SC2 (dx, dy) per pixel, those of
