@@ -323,15 +323,21 @@ struct Correspondences
     std::vector<cv::Point2f> points2d;
 };
 
+//! The matches of the map's features (their descriptors: the rows `features` of mapDescriptors) to
+//! a view's: query the index into `features`, train the view's feature.
+inline std::vector<cv::DMatch> mapMatches(const cv::Mat& mapDescriptors, const std::vector<int>& features,
+                                          const cv::Mat& viewDescriptors, int maxHamming)
+{
+    cv::Mat descriptors;
+    for (int i : features)
+        descriptors.push_back(mapDescriptors.row(i));
+    return mutualMatches(descriptors, viewDescriptors, maxHamming);
+}
+
 inline void addLineCorrespondences(const LineMap& map, const DescribedLines& mapView, const DescribedLines& view,
                                    int maxHamming, Correspondences& out)
 {
-    if (map.lineOf.empty())
-        return;
-    cv::Mat mapDescriptors;
-    for (int i : map.lineOf)
-        mapDescriptors.push_back(mapView.descriptors.row(i));
-    for (const cv::DMatch& m : mutualMatches(mapDescriptors, view.descriptors, maxHamming))
+    for (const cv::DMatch& m : mapMatches(mapView.descriptors, map.lineOf, view.descriptors, maxHamming))
     {
         out.segments3d.push_back(map.segments3d.row(m.queryIdx));
         out.segments2d.push_back(view.lines[m.trainIdx]);
@@ -341,12 +347,7 @@ inline void addLineCorrespondences(const LineMap& map, const DescribedLines& map
 inline void addPointCorrespondences(const PointMap& map, const DescribedPoints& mapView, const DescribedPoints& view,
                                     int maxHamming, Correspondences& out)
 {
-    if (map.pointOf.empty())
-        return;
-    cv::Mat mapDescriptors;
-    for (int i : map.pointOf)
-        mapDescriptors.push_back(mapView.descriptors.row(i));
-    for (const cv::DMatch& m : mutualMatches(mapDescriptors, view.descriptors, maxHamming))
+    for (const cv::DMatch& m : mapMatches(mapView.descriptors, map.pointOf, view.descriptors, maxHamming))
     {
         out.points3d.push_back(map.points3d[m.queryIdx]);
         out.points2d.push_back(view.keypoints[m.trainIdx].pt);

@@ -263,8 +263,9 @@ def test_detect_writes_jpeg_drawings_with_ext_jpg(tmp_path):
 # The benchmark's front-end mode: the budget, the matches and the tracks, on frames whose answer is known
 
 
-def markdown_table(text, first_header="method"):
-    """The first Markdown table of text whose first column is first_header: {row name: {column: cell}}."""
+def markdown_table(text, first_header="method", keys=1):
+    """The first Markdown table of text whose first column is first_header: {row name: {column: cell}},
+    a row named by its first cell, or by the tuple of its first `keys` cells."""
     lines = text.splitlines()
     start = next(i for i, line in enumerate(lines) if line.startswith("| %s |" % first_header))
     header = [cell.strip() for cell in lines[start].strip("|").split("|")]
@@ -273,7 +274,7 @@ def markdown_table(text, first_header="method"):
         if not line.startswith("|"):
             break
         cells = [cell.strip() for cell in line.strip("|").split("|")]
-        rows[cells[0]] = dict(zip(header, cells))
+        rows[cells[0] if keys == 1 else tuple(cells[:keys])] = dict(zip(header, cells))
     return rows
 
 
@@ -401,20 +402,6 @@ def stereo_folder(tmp_path, frames, right=True, calib_rows=2, pose_rows=None):
     return folder
 
 
-def pose_table(text):
-    """The pose table: {(method, features, budget): {column: cell}}."""
-    lines = text.splitlines()
-    start = next(i for i, line in enumerate(lines) if line.startswith("| method | features | budget |"))
-    header = [cell.strip() for cell in lines[start].strip("|").split("|")]
-    rows = {}
-    for line in lines[start + 2:]:
-        if not line.startswith("|"):
-            break
-        cells = [cell.strip() for cell in line.strip("|").split("|")]
-        rows[tuple(cells[:3])] = dict(zip(header, cells))
-    return rows
-
-
 @pytest.mark.parametrize("defect, fragments", [
     ({"right": False}, ["--dataset=stereo needs", "image_r/"]),
     ({"calib_rows": 1}, ["--dataset=stereo needs", "P0 and P1"]),
@@ -436,7 +423,7 @@ def test_stereo_pose_scores_every_row_against_lsd_on_the_same_pairs(tmp_path):
     folder = stereo_folder(tmp_path, 3)
     result = run("lsd_advance_benchmark", ["--dataset=stereo", "--data=%s" % folder, "--methods=lsd,lsdadvance_front_end",
                                            "--budgets=60", "--seeds=1", "--orb=300"], tmp_path)
-    rows = pose_table(succeeded(result))
+    rows = markdown_table(succeeded(result), keys=3)  # (method, features, budget)
     front_end = "LSDAdvance (front-end preset)"
     assert set(rows) == {("ORB", "points", "-"), ("LSD", "lines", "60"), ("LSD", "points + lines", "60"),
                          (front_end, "lines", "60"), (front_end, "points + lines", "60"),

@@ -75,6 +75,9 @@ response (equal responses in their order in keylines), otherwise unchanged but f
 which is their index 0..N-1: the numbering LBD (BinaryDescriptor::compute) and its matcher expect
 of a KeyLine vector. May be keylines itself.
 Throws cv::Exception on a negative maxLines.
+@note This is the strongest-first budget. The KeyLines of a detector in
+LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS are in the order of that budget already: a smaller budget
+is their first N (setMaxLines() on the detector gives it directly).
 */
 CV_EXPORTS_W void keepStrongestKeyLines(const std::vector<line_descriptor::KeyLine>& keylines, int maxLines,
                                         CV_OUT std::vector<line_descriptor::KeyLine>& kept);
