@@ -26,10 +26,12 @@ import sys
 import tempfile
 
 DETECT = "*LSDAdvanceImpl::detect*"
-# The bodies of parallel_for_ over many small tasks.
-SMALL_TASKS = ("FullScaleSmoothing::SmoothedRows::operator()", "EdgeRows::operator()", "FastLsd::GradientRows::operator()",
-               "FastLsd::JoinedRegions::operator()", "GroupTasks::operator()", "SegmentResponses::operator()")
-TILES = "FastLsd::TileRegions::operator()"
+# The functions whose work is parallel over many small tasks (runTasks; their serial set-up is small).
+SMALL_TASKS = ("FullScaleSmoothing::apply", "computeGradient(", "Tiling::validateJoined", "lsda::mergeGroups(",
+               "lsda::unknownResponses(")
+# The tiles' work (a task per tile), and the function each tile starts with.
+TILES = "Tiling::growTiles"
+TILE_START = "orderSeeds"
 THREADS = (1, 2, 4, 8)
 
 
@@ -84,8 +86,10 @@ def measure(benchmark, name, folder, work):
     callgrind(benchmark, data, whole, ["--toggle-collect=" + DETECT])
     counts = inclusive(whole, ["LSDAdvanceImpl::detect", TILES] + list(SMALL_TASKS), optional=SMALL_TASKS)
     split = os.path.join(work, name + ".tiles")
-    callgrind(benchmark, data, split, ["--collect-atstart=no", "--toggle-collect=*" + TILES + "*",
-                                       "--dump-before=*FastLsd::orderTile*"])
+    # The pattern ends at growTiles' last parameter: the name of its task's body contains "growTiles(" too,
+    # and a second toggle inside the first would stop the collection.
+    callgrind(benchmark, data, split, ["--collect-atstart=no", "--toggle-collect=*" + TILES + "(*int)",
+                                       "--dump-before=*" + TILE_START + "*"])
     # Dump k (from 2) holds tile k - 1, the final file the last tile; dump 1 what preceded the first.
     parts = sorted(glob.glob(split + ".*"), key=lambda p: int(p.rsplit(".", 1)[1]))
     tiles = [summary(p) for p in parts[1:]] + [summary(split)]

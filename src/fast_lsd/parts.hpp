@@ -23,6 +23,13 @@
 #include <climits>
 #include <vector>
 
+// A function compiled as one of its own, never inlined.
+#if defined(__GNUC__)
+#define LSDA_NOINLINE __attribute__((noinline))
+#else
+#define LSDA_NOINLINE
+#endif
+
 namespace cv {
 namespace ximgproc {
 namespace lsda {

@@ -20,13 +20,8 @@ namespace fast_lsd {
 
 namespace {
 
-// Each variant of the growth compiled as a function of its own: inlined into growRegion's choice of
-// variant, the loop of the one that runs loses registers to the others.
-#if defined(__GNUC__)
-#define LSDA_NOINLINE __attribute__((noinline))
-#else
-#define LSDA_NOINLINE
-#endif
+// Each variant of the growth compiled as a function of its own (LSDA_NOINLINE): inlined into
+// growRegion's choice of variant, the loop of the one that runs loses registers to the others.
 
 // The region's direction (sx, sy) and the limit of the test, each in the four lanes of a vector.
 struct DirectionLanes

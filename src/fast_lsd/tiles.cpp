@@ -49,8 +49,8 @@ inline int tilesAlong(int rows, int tileHeight)
 
 // The seeds of a tile in the pseudo-ordering, into its grower: highest bin first; inside a bin,
 // raster order (a stable counting sort). Those of the rows next to a seam were chosen before the
-// tiles grew.
-void orderSeeds(const GradientField& field, const RegionRules& rules, int seedAlignedNeighbours, Tile& tile)
+// tiles grew. Never inlined: scripts/tile_work.py counts each tile's instructions from its call.
+LSDA_NOINLINE void orderSeeds(const GradientField& field, const RegionRules& rules, int seedAlignedNeighbours, Tile& tile)
 {
     int defined = 0;
     for (int y = tile.y0; y < tile.y1; y++)
