@@ -238,6 +238,7 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     EXPECT_EQ(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS, frontEnd->getLineOrder());
     EXPECT_EQ(4, frontEnd->getDirectionBins());
     EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, frontEnd->getLengthFilterMode());  // stateless
+    EXPECT_EQ(LSDAdvance::SMOOTH_EVERY_IMAGE, frontEnd->getLSDParams().fullScaleSmoothing);
 
     // Otherwise the defaults.
     Ptr<LSDAdvance> reverted = createLSDAdvance(LSDAdvance::PRESET_FRONT_END);
@@ -246,14 +247,22 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     const LSDAdvance::Params a = reverted->getParams(), b;
     for (const lsda::Field<LSDAdvance::Params>& f : lsda::fieldsOf<LSDAdvance::Params>())
         EXPECT_EQ(f.get(b), f.get(a)) << f.name;
-    EXPECT_EQ(LSDAdvance::LSDParams().scale, reverted->getLSDParams().scale);
+    LSDAdvance::LSDParams c = reverted->getLSDParams();
+    c.fullScaleSmoothing = LSDAdvance::SMOOTH_ALIASED_IMAGES;
+    const LSDAdvance::LSDParams d;
+    for (const lsda::Field<LSDAdvance::LSDParams>& f : lsda::fieldsOf<LSDAdvance::LSDParams>())
+        EXPECT_EQ(f.get(d), f.get(c)) << f.name;
 
-    // Its lines: the defaults' lines in the order across directions, cut to 60.
+    // Its lines: the defaults' lines of the smoothed image in the order across directions, cut to 60.
     const Mat img = building();
     std::vector<Vec4f> lines, all;
     frontEnd->detect(img, lines);
     EXPECT_EQ(60u, lines.size());
-    createLSDAdvance()->detect(img, all);
+    Ptr<LSDAdvance> smoothing = createLSDAdvance();
+    LSDAdvance::LSDParams lsdParams = smoothing->getLSDParams();
+    lsdParams.fullScaleSmoothing = LSDAdvance::SMOOTH_EVERY_IMAGE;
+    smoothing->setLSDParams(lsdParams);
+    smoothing->detect(img, all);
     std::vector<int> order(all.size()), scratch;
     for (size_t i = 0; i < order.size(); i++)
         order[i] = (int)i;

@@ -989,6 +989,7 @@ int run(const AppOptions& args)
     pose.seeds = args.integer("seeds", 1, 1000);
     pose.orbFeatures = args.integer("orb", 1);
     pose.pairs = args.integer("pairs", 0);
+    pose.subset = subset == "all" ? -1 : subset == "odd";
     pose.maxHamming = args.integer("pose-hamming", 0, 256);
     const double scale = args.number("scale", 0, 1, true);
     if (dataset == "multiview")
@@ -1147,6 +1148,10 @@ int run(const AppOptions& args)
             what = format("Multi-view pose: %zu ordered triplets of consecutive views (each triplet in both orders) of %s at scale %g",
                           rows[0].pairs.size(), data.c_str(), scale);
         }
+        if (rows[0].pairs.empty())
+            throw std::runtime_error("--pairs and --subset leave no pair to estimate");
+        if (subset != "all")
+            what += format(" (the %s ones)", subset.c_str());
         std::cout << what << format(", %d RANSAC seed(s) per pair, %d thread(s); LBD mutual nearest neighbours (Hamming <= %d; "
                             "between the map's two views also within %g px of the epipolar band), ORB %d points "
                             "(Hamming <= %d); success: rotation < %g deg and translation < %g %% of the step; pose AUC: "
@@ -1249,7 +1254,7 @@ int main(int argc, char** argv)
         "{methods  | lsd,fld,fld_merge,edlines,plvins,lsdadvance | comma-separated methods (LSDAdvance's variants: "
                                   "the files methods/<name>.yml) }"
         "{params   |            | YAML/XML of LSDAdvance parameters (write() or save()) for the lsdadvance method }"
-        "{subset   | all        | yorkurban images to use: all, even or odd (by index in list.txt) }"
+        "{subset   | all        | yorkurban images (by index in list.txt), stereo pairs or multiview triplets (by their first frame or view) to use: all, even or odd }"
         "{repeats  | 1          | detections per image for the time (median), >= 1; with --lbd, descriptions by each LBD }"
         "{threads  | 1          | cv::setNumThreads for the whole run, 1 to 1024 (times in the tables are one core by default) }"
         "{long     | 60         | length in pixels from which a segment is long, > 0 }"

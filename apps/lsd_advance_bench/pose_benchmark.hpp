@@ -46,11 +46,14 @@ struct PoseBenchmarkParams
     double epipolarTolerance = 2; //!< two-view matches of known cameras: px from the epipolar band (lines) or line (points)
     double minEpipolarAngle = 10; //!< degrees; lines closer to the epipolar direction are not lifted
     int pairs = 0;               //!< the first N pairs or triplets (0: all)
+    int subset = -1;             //!< of those, only the pairs (triplets) of even (0) or odd (1) index; -1: all
     double rotationLimit = 0.5;  //!< degrees: the pose AUC's rotation error at which a pair scores 0
     double translationLimit = 0.1;  //!< the same for the translation error, as a share of the true step
     double successRotation = 0.25;  //!< degrees: a pair is a success below this rotation error ...
     double successTranslation = 0.05;  //!< ... and below this share of the step
     cv::ximgproc::line_evaluation::PoseEstimationParams estimation;
+
+    bool takes(size_t pair) const { return subset < 0 || (int)(pair % 2) == subset; }
 };
 
 //! A budget as the tables print it.
@@ -625,7 +628,7 @@ inline std::vector<PoseRow> runStereoPose(const std::vector<LineMethod>& methods
         std::cerr << "\r[stereo] frame " << t + 1 << "/" << frames << std::flush;
         const ViewFeatures left = run.describe(readPoseView(sequence.imagePaths[t], K, 1).gray, true);
         const ViewFeatures right = run.describe(readPoseView(sequence.rightImagePaths[t], K, 1).gray, false);
-        if (t > 0)
+        if (t > 0 && params.takes(t - 1))
             run.estimate(sequence.P0, previousLeft, sequence.P1, previousRight, K, left,
                          relativePose(sequence.poses[t - 1], sequence.poses[t]));
         previousLeft = left;
@@ -664,6 +667,8 @@ inline std::vector<PoseRow> runMultiViewPose(const std::vector<LineMethod>& meth
             const size_t a = reversed ? i + 2 : i, m = i + 1, q = reversed ? i : i + 2;
             if (params.pairs > 0 && 2 * i + reversed >= (size_t)params.pairs)
                 break;
+            if (!params.takes(i))
+                continue;
             run.estimate(projectionOf(K[m], identity), features[m],
                          projectionOf(K[a], relativePose(scene.poses[m], scene.poses[a])), features[a], K[q],
                          features[q], relativePose(scene.poses[m], scene.poses[q]));

@@ -441,6 +441,24 @@ def test_stereo_pose_scores_every_row_against_lsd_on_the_same_pairs(tmp_path):
     assert float(rows[("ORB", "points", "-")]["matches / pair"]) > 0
 
 
+def test_stereo_pose_subset_takes_the_even_or_the_odd_pairs(tmp_path):
+    """Five KITTI frames (four pairs): --subset=even and odd each estimate two of them, different ones
+    (LSD's lines give other errors), and none left is an error."""
+    folder = stereo_folder(tmp_path, 5)
+    tables = {}
+    for subset in ("all", "even", "odd"):
+        result = run("lsd_advance_benchmark", ["--dataset=stereo", "--data=%s" % folder, "--methods=lsd", "--budgets=0",
+                                               "--seeds=1", "--orb=300", "--subset=" + subset], tmp_path)
+        tables[subset] = markdown_table(succeeded(result), keys=3)
+        assert "%d pairs of consecutive frames" % (4 if subset == "all" else 2) in result.stdout
+    for subset, pairs in (("all", 4), ("even", 2), ("odd", 2)):
+        assert tables[subset][("LSD", "lines", "all")]["solved"].endswith("/%d" % pairs)
+    assert tables["even"][("LSD", "lines", "all")] != tables["odd"][("LSD", "lines", "all")]
+    result = run("lsd_advance_benchmark", ["--dataset=stereo", "--data=%s" % folder, "--methods=lsd", "--pairs=1",
+                                           "--subset=odd"], tmp_path)
+    assert result.returncode == 1 and "leave no pair" in result.stderr
+
+
 # --------------------------------------------------------------------------------------------
 # The method files: LSDAdvance's variants as data, in the form write() gives them
 

@@ -241,8 +241,9 @@ public:
         PRESET_SEQUENCE = 3,
         /** a point-line SLAM front end that keeps a budget of lines for LBD: PRESET_MOST_ACCURATE with
         Params::maxLines 60 in LINE_ORDER_ACROSS_DIRECTIONS (the 60 strongest lines spread over the
-        horizontal, the vertical and the two diagonals: the lines that gave the best poses,
-        doc/pose.md). Stateless, unlike PRESET_SEQUENCE. */
+        horizontal, the vertical and the two diagonals) and LSDParams::fullScaleSmoothing
+        SMOOTH_EVERY_IMAGE: the lines that gave the best poses, doc/pose.md. Stateless, unlike
+        PRESET_SEQUENCE. */
         PRESET_FRONT_END = 4
     };
 
