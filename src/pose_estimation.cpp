@@ -24,6 +24,12 @@ namespace {
 
 // A camera point closer than this to the image plane (in the reference's unit) is behind the camera.
 constexpr double kMinDepth = 1e-9;
+// The smallest singular value of a pose's normalised Jacobian, relative to the largest, below which
+// its features leave a direction of the pose free: parallel lines in float coordinates give about
+// 1e-5 (rounding), the inliers of every pose solved on KITTI and the fountain more than 5e-4.
+constexpr double kMinSingularValue = 1e-4;
+// The refinement's residual, in pixels, of a point that a trial step sent behind the camera.
+constexpr double kBehindCameraResidual = 1e6;
 
 struct Constraint
 {
@@ -61,6 +67,24 @@ inline bool residual(const Constraint& c, const Pose& pose, double& r, Vec3d* gr
     return true;
 }
 
+// The residual of constraint c for pose (R, t) and its gradient with respect to the pose turned on
+// the left by a rotation vector w and moved by dt (Y = exp(w) R X + t + dt at w = dt = 0): dY/dw =
+// -[R X]x and dY/dt = I, so dr/dw = (R X) x g and dr/dt = g, with g the gradient in Y. False when X
+// is behind the camera.
+inline bool jacobianRow(const Constraint& c, const Pose& pose, double& r, double row[6])
+{
+    Vec3d g;
+    if (!residual(c, pose, r, &g))
+        return false;
+    const Vec3d wRow = (pose.R * c.X).cross(g);
+    for (int j = 0; j < 3; j++)
+    {
+        row[j] = wRow[j];
+        row[3 + j] = g[j];
+    }
+    return true;
+}
+
 // The feature's squared error: the larger endpoint distance of a line, the reprojection error of a
 // point; DBL_MAX when a point of it is behind the camera.
 double featureError(const Correspondences& data, int feature, const Pose& pose)
@@ -90,24 +114,39 @@ double poseCost(const Correspondences& data, const Pose& pose, const PoseEstimat
     return cost;
 }
 
-// The pose turned by the rotation vector w (on the left) and moved by dt.
+// The pose with its rotation turned by the rotation vector w (on the left) and its translation
+// moved by dt: Y = exp(w) R X + t + dt, the parametrisation of solveMinimal's Jacobian.
 Pose updated(const Pose& pose, const Vec3d& w, const Vec3d& dt)
 {
     Matx33d dR;
     Rodrigues(w, dR);
     Pose next;
     next.R = dR * pose.R;
-    next.t = dR * pose.t + dt;
+    next.t = pose.t + dt;
     return next;
 }
 
+// Whether the sample's points are all in front of the camera of the pose.
+bool inFront(const Correspondences& data, const int sample[3], const Pose& pose)
+{
+    double r;
+    for (int k = 0; k < 6; k++)
+        if (!residual(data.constraints[2 * sample[k / 2] + k % 2], pose, r))
+            return false;
+    return true;
+}
+
 // The pose that satisfies the six constraints of three features exactly: Newton's method from the
-// identity (no motion prior), each step turning the pose on the left by a rotation vector. False
-// when the system is singular (a degenerate sample), does not converge or sends a point behind the
-// camera.
+// identity pose, each step turning the pose on the left by a rotation vector, halved while it
+// would send a point of the sample behind the camera. So it finds the solution nearest the
+// reference frame: the reference should be a frame near the camera (the previous frame or a
+// keyframe, as in tracking). False when the system is singular (a degenerate sample) or the
+// steps do not converge.
 bool solveMinimal(const Correspondences& data, const int sample[3], Pose& pose)
 {
     pose = Pose();
+    if (!inFront(data, sample, pose))
+        return false;
     for (int iteration = 0; iteration < 12; iteration++)
     {
         Matx66d J;
@@ -115,17 +154,7 @@ bool solveMinimal(const Correspondences& data, const int sample[3], Pose& pose)
         double largest = 0;
         for (int k = 0; k < 6; k++)
         {
-            const Constraint& c = data.constraints[2 * sample[k / 2] + k % 2];
-            Vec3d g;
-            if (!residual(c, pose, r[k], &g))
-                return false;
-            // Y = exp(w) R X + t: dY/dw = -[R X]x, dY/dt = I, so dr/dw = (R X) x g and dr/dt = g.
-            const Vec3d wRow = (pose.R * c.X).cross(g);
-            for (int j = 0; j < 3; j++)
-            {
-                J(k, j) = wRow[j];
-                J(k, 3 + j) = g[j];
-            }
+            jacobianRow(data.constraints[2 * sample[k / 2] + k % 2], pose, r[k], J.val + 6 * k);
             largest = std::max(largest, std::abs(r[k]));
         }
         if (largest < 1e-9)
@@ -133,7 +162,15 @@ bool solveMinimal(const Correspondences& data, const int sample[3], Pose& pose)
         Vec6d step;
         if (!solve(J, -r, step, DECOMP_LU) || !checkRange(step))
             return false;
-        pose = updated(pose, Vec3d(step[0], step[1], step[2]), Vec3d(step[3], step[4], step[5]));
+        Pose next = updated(pose, Vec3d(step[0], step[1], step[2]), Vec3d(step[3], step[4], step[5]));
+        for (int halvings = 0; !inFront(data, sample, next); halvings++)
+        {
+            if (halvings == 8)
+                return false;
+            step *= 0.5;
+            next = updated(pose, Vec3d(step[0], step[1], step[2]), Vec3d(step[3], step[4], step[5]));
+        }
+        pose = next;
     }
     // Not converged to the last nanopixel: accept a pose that fits the sample to a micropixel.
     for (int k = 0; k < 6; k++)
@@ -143,6 +180,31 @@ bool solveMinimal(const Correspondences& data, const int sample[3], Pose& pose)
             return false;
     }
     return true;
+}
+
+// Whether the features determine the pose: the Jacobian of their residuals, its columns scaled to
+// unit norm (rotation and translation have other units), has no null direction but rounding's. 3D
+// lines that are all parallel, for one, leave the translation along them free: every pose along it
+// fits them all.
+bool determinesPose(const Correspondences& data, const std::vector<int>& features, const Pose& pose)
+{
+    Mat J(2 * (int)features.size(), 6, CV_64F);
+    for (int i = 0; i < J.rows; i++)
+    {
+        double r;
+        if (!jacobianRow(data.constraints[2 * features[i / 2] + i % 2], pose, r, J.ptr<double>(i)))
+            return false;
+    }
+    for (int j = 0; j < 6; j++)
+    {
+        const double n = norm(J.col(j));
+        if (!(n > 0))
+            return false;
+        J.col(j) *= 1.0 / n;
+    }
+    Mat singularValues;
+    SVDecomp(J, singularValues, noArray(), noArray(), SVD::NO_UV);
+    return singularValues.at<double>(5) > kMinSingularValue * singularValues.at<double>(0);
 }
 
 // RANSAC hypotheses needed to draw an all-inlier sample of three with the given confidence.
@@ -159,7 +221,9 @@ int iterationsNeeded(double inlierShare, double confidence, int maxIterations)
 
 // The Huber-weighted residuals of the given features for the pose Rodrigues(w) R0, t, and their
 // Jacobian with respect to (w, t): cv::LMSolver's callback. The weights are fixed per run
-// (iteratively reweighted least squares).
+// (iteratively reweighted least squares). A trial step that sends a point behind the camera gets a
+// residual far beyond any inlier's, so that LMSolver rejects the step (it would stop the whole run
+// on a callback that fails).
 class RobustReprojection CV_FINAL : public LMSolver::Callback
 {
 public:
@@ -198,7 +262,11 @@ public:
             double r;
             Vec3d g;
             if (!residual(c, pose, r, &g))
-                return false;
+            {
+                if (!J.empty())  // never at a pose LMSolver accepted: each was in front
+                    return false;
+                r = kBehindCameraResidual;
+            }
             err.at<double>(i) = weights[i] * r;
             if (J.empty())
                 continue;
@@ -261,7 +329,7 @@ Pose refine(const Correspondences& data, const Pose& hypothesis, const PoseEstim
             break;
         const Ptr<RobustReprojection> problem = makePtr<RobustReprojection>(data, pose, features, params.huberWidth);
         Mat param = (Mat_<double>(6, 1) << 0, 0, 0, pose.t[0], pose.t[1], pose.t[2]);
-        if (LMSolver::create(problem, 50)->run(param) == -1)  // a point went behind the camera
+        if (LMSolver::create(problem, 50)->run(param) == -1)  // the callback failed: keep the pose
             break;
         const Pose refined = problem->poseAt(param);
         int before, after;
@@ -405,14 +473,16 @@ PoseEstimate estimatePose(InputArray cameraMatrix, InputArray segments3d, InputA
         return estimate;
 
     const Pose pose = refine(data, best, params);
-    for (int f : inliersOf(data, pose, params))
+    const std::vector<int> inliers = inliersOf(data, pose, params);
+    for (int f : inliers)
     {
         if (data.isLine(f))
             estimate.lineInlierMask[f] = 1, estimate.lineInliers++;
         else
             estimate.pointInlierMask[f - data.lines] = 1, estimate.pointInliers++;
     }
-    estimate.solved = estimate.lineInliers + estimate.pointInliers >= params.minInliers;
+    estimate.solved =
+        estimate.lineInliers + estimate.pointInliers >= params.minInliers && determinesPose(data, inliers, pose);
     if (estimate.solved)
     {
         Mat(pose.R).copyTo(estimate.R);

@@ -126,12 +126,14 @@ void triangulateSegments(InputArray P1, InputArray P2, InputArray segments1In, I
             !awayFromEpipolarLine(s1, epipole1, minAngle) || !awayFromEpipolarLine(s2, epipole2, minAngle))
             continue;
         const Vec4d plane1 = camera1.planeOf(lineThrough(s1)), plane2 = camera2.planeOf(lineThrough(s2));
-        // Each segment's endpoints on the 3D line: their rays meet the other view's plane.
+        // Each segment's endpoints on the 3D line: their rays meet the other view's plane, in front of
+        // their camera (behind it, the segment would be the 3D line's part through infinity).
         Vec3d A1, B1, A2, B2;
         if (!rayMeetsPlane(camera1, Point2d(s1[0], s1[1]), plane2, A1) ||
             !rayMeetsPlane(camera1, Point2d(s1[2], s1[3]), plane2, B1) ||
             !rayMeetsPlane(camera2, Point2d(s2[0], s2[1]), plane1, A2) ||
-            !rayMeetsPlane(camera2, Point2d(s2[2], s2[3]), plane1, B2))
+            !rayMeetsPlane(camera2, Point2d(s2[2], s2[3]), plane1, B2) || !camera1.inFront(A1) ||
+            !camera1.inFront(B1) || !camera2.inFront(A2) || !camera2.inFront(B2))
             continue;
         const double length1 = norm(B1 - A1);
         if (!(length1 > 0))

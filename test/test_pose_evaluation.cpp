@@ -86,10 +86,12 @@ void expectPose(const PoseEstimate& estimate, const TruePose& truth, double maxR
     EXPECT_LE(translationError, maxTranslation);
 }
 
-// The motions of a stereo odometry step (KITTI: a fraction of a degree, a metre forward) and of a
-// wide-baseline relocalisation (Strecha: 15 degrees, two metres sideways).
+// The motions of a stereo odometry step (KITTI: a fraction of a degree, a metre forward), of a
+// wide-baseline relocalisation (Strecha: 15 degrees, two metres sideways) and a turn of 35 degrees,
+// far from the identity pose the minimal solver's Newton steps start from.
 const TruePose kMotions[] = { poseOf(Vec3d(0.3, -0.5, 0.1), Vec3d(0.05, -0.02, -1.2)),
-                              poseOf(Vec3d(2, 15, -1), Vec3d(-2.0, 0.1, 0.3)) };
+                              poseOf(Vec3d(2, 15, -1), Vec3d(-2.0, 0.1, 0.3)),
+                              poseOf(Vec3d(5, 35, 3), Vec3d(-3.0, 0.2, 1.0)) };
 
 TEST(LSDAdvance_PoseEstimation, noise_free_lines_give_the_exact_pose)
 {
@@ -197,7 +199,8 @@ TEST(LSDAdvance_PoseEstimation, too_few_or_degenerate_correspondences_are_not_so
     EXPECT_FALSE(estimatePose(kK, scene.segments3d, scene.segments2d).solved);
     EXPECT_FALSE(estimatePose(kK, noArray(), noArray()).solved);
 
-    // Parallel 3D lines leave the translation along them free: no minimal sample is solvable.
+    // Parallel 3D lines leave the translation along them free: every pose along it fits them all,
+    // and none is the pose.
     Scene parallel;
     RNG rng(9);
     for (int i = 0; i < 12; i++)
@@ -210,7 +213,6 @@ TEST(LSDAdvance_PoseEstimation, too_few_or_degenerate_correspondences_are_not_so
     }
     const PoseEstimate estimate = estimatePose(kK, parallel.segments3d, parallel.segments2d);
     EXPECT_FALSE(estimate.solved);
-    EXPECT_EQ(0, estimate.lineInliers);
 }
 
 TEST(LSDAdvance_PoseEstimation, the_same_seed_gives_the_same_pose)

@@ -11,7 +11,7 @@
 //    pose of frame t+1;
 //  - multiview (a Strecha-style scene): the map from views i and i+1, the pose of view i+2.
 // ORB points (features2d) give the references: points alone, and points with each method's lines.
-// The ground truth never enters the matching nor the estimation.
+// The estimated view's ground truth never enters the matching nor the estimation; it only scores.
 
 #ifndef OPENCV_LSD_ADVANCE_APPS_POSE_BENCHMARK_HPP
 #define OPENCV_LSD_ADVANCE_APPS_POSE_BENCHMARK_HPP
@@ -82,7 +82,9 @@ struct SelectedLines
 
 //! A method's lines under each selection. LSDAdvance ranks its own (its response, by its budget,
 //! Params::maxLines: what detect() returns); every other selection is the longest `budget` lines of
-//! one detection of all of them, so that a budget is the prefix of a larger one.
+//! one detection of all of them, so that a budget is the prefix of a larger one. Each detection
+//! starts a new sequence: a detector with a sequence state (PRESET_SEQUENCE) would otherwise see
+//! each image once per selection, and the two cameras' images in turn.
 inline SelectedLines selectLines(const LineMethod& method, const cv::Mat& gray, const std::vector<LineSelection>& selections)
 {
     SelectedLines out;
@@ -96,6 +98,7 @@ inline SelectedLines selectLines(const LineMethod& method, const cv::Mat& gray, 
         if (method.lsdAdvance && !s.byLength)
         {
             method.lsdAdvance->setMaxLines(s.budget);
+            method.reset();
             tm.start();
             method.detect(gray, lines);
             tm.stop();
@@ -108,6 +111,7 @@ inline SelectedLines selectLines(const LineMethod& method, const cv::Mat& gray, 
             {
                 if (method.lsdAdvance)
                     method.lsdAdvance->setMaxLines(0);
+                method.reset();
                 tm.start();
                 method.detect(gray, all);
                 tm.stop();
@@ -222,6 +226,15 @@ inline RelativePose relativePose(const cv::Mat& poseA, const cv::Mat& poseB)
     const cv::Matx33d Ra = a.get_minor<3, 3>(0, 0), Rb = b.get_minor<3, 3>(0, 0);
     const cv::Vec3d Ca(a(0, 3), a(1, 3), a(2, 3)), Cb(b(0, 3), b(1, 3), b(2, 3));
     return RelativePose{ Rb.t() * Ra, Rb.t() * (Ca - Cb) };
+}
+
+//! Throws when the true pose of an estimated view has no translation: its translation error, as a
+//! share of the step, would be undefined.
+inline void requireStep(const RelativePose& truth, const std::string& views)
+{
+    if (!(cv::norm(truth.t) > 0))
+        throw std::runtime_error(views + ": no translation between them, so the translation error, a share of the "
+                                 "step, is undefined");
 }
 
 //! K [R | t].
@@ -364,6 +377,7 @@ inline std::vector<PoseTrial> estimateTrials(const cv::Matx33d& K, const Corresp
     using namespace cv::ximgproc::line_evaluation;
     std::vector<PoseTrial> trials;
     const double step = cv::norm(truth.t);
+    CV_Assert(step > 0);  // requireStep
     for (int seed = 0; seed < params.seeds; seed++)
     {
         PoseEstimationParams estimation = params.estimation;
@@ -468,13 +482,18 @@ struct PoseView
 };
 
 //! Reads an image as gray, resized by scale (cv::INTER_AREA) with its camera matrix (pixel centres
-//! at integers: x' = scale (x + 0.5) - 0.5).
-inline PoseView readPoseView(const std::string& path, const cv::Matx33d& K, double scale)
+//! at integers: x' = scale (x + 0.5) - 0.5); an error when it is not the size its camera was calibrated
+//! for (when given).
+inline PoseView readPoseView(const std::string& path, const cv::Matx33d& K, double scale,
+                             const cv::Size& calibrated = cv::Size())
 {
     PoseView view;
     const cv::Mat gray = cv::imread(path, cv::IMREAD_GRAYSCALE);
     if (gray.empty())
         throw std::runtime_error("cannot read " + path + " as an image");
+    if (!calibrated.empty() && gray.size() != calibrated)
+        throw std::runtime_error(cv::format("%s is %dx%d, its camera was calibrated for %dx%d", path.c_str(), gray.cols,
+                                            gray.rows, calibrated.width, calibrated.height));
     view.K = K;
     if (scale == 1)
         view.gray = gray;
@@ -618,10 +637,15 @@ inline std::vector<PoseRow> runStereoPose(const std::vector<LineMethod>& methods
 {
     if (sequence.rightImagePaths.empty() || sequence.P0.empty() || sequence.P1.empty() || sequence.poses.empty())
         throw std::runtime_error("--dataset=stereo needs image_l/ with image_r/, calib.txt (P0 and P1) and poses.txt");
-    const cv::Matx33d K = cv::Matx34d(sequence.P0).get_minor<3, 3>(0, 0);
+    const cv::Matx34d P0(sequence.P0);
+    if (P0(0, 3) != 0 || P0(1, 3) != 0 || P0(2, 3) != 0)
+        throw std::runtime_error("--dataset=stereo: calib.txt's P0 must be K [I | 0] (the left camera at the origin)");
+    const cv::Matx33d K = P0.get_minor<3, 3>(0, 0);
     PoseRun run(methods, params);
     const size_t frames = params.pairs > 0 ? std::min(sequence.imagePaths.size(), (size_t)params.pairs + 1)
                                            : sequence.imagePaths.size();
+    for (size_t t = 1; t < frames; t++)
+        requireStep(relativePose(sequence.poses[t - 1], sequence.poses[t]), cv::format("frames %zu and %zu", t - 1, t));
     ViewFeatures previousLeft, previousRight;
     for (size_t t = 0; t < frames; t++)
     {
@@ -655,7 +679,8 @@ inline std::vector<PoseRow> runMultiViewPose(const std::vector<LineMethod>& meth
     for (size_t v = 0; v < views; v++)
     {
         std::cerr << "\r[multiview] view " << v + 1 << "/" << views << std::flush;
-        const PoseView view = readPoseView(scene.imagePaths[v], cv::Matx33d(scene.cameraMatrices[v]), scale);
+        const PoseView view =
+            readPoseView(scene.imagePaths[v], cv::Matx33d(scene.cameraMatrices[v]), scale, scene.imageSizes[v]);
         features.push_back(run.describe(view.gray, true));
         K.push_back(view.K);
     }
@@ -669,9 +694,11 @@ inline std::vector<PoseRow> runMultiViewPose(const std::vector<LineMethod>& meth
                 break;
             if (!params.takes(i))
                 continue;
+            const RelativePose truth = relativePose(scene.poses[m], scene.poses[q]);
+            requireStep(truth, cv::format("views %zu and %zu", m, q));
             run.estimate(projectionOf(K[m], identity), features[m],
                          projectionOf(K[a], relativePose(scene.poses[m], scene.poses[a])), features[a], K[q],
-                         features[q], relativePose(scene.poses[m], scene.poses[q]));
+                         features[q], truth);
         }
     return run.rows();
 }

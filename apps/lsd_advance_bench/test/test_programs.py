@@ -386,8 +386,9 @@ def kitti_folder():
     return kitti
 
 
-def stereo_folder(tmp_path, frames, right=True, calib_rows=2, pose_rows=None):
-    """The first frames of kitti_seq1 as a stereo sequence folder, optionally malformed."""
+def stereo_folder(tmp_path, frames, right=True, calib_rows=2, pose_rows=None, p0_moved=False, still=False):
+    """The first frames of kitti_seq1 as a stereo sequence folder, optionally malformed (p0_moved: the left
+    camera not at the origin; still: every pose the first)."""
     kitti = kitti_folder()
     names = sorted(os.listdir(os.path.join(kitti, "image_l")))[:frames]
     folder = tmp_path / "stereo"
@@ -396,9 +397,15 @@ def stereo_folder(tmp_path, frames, right=True, calib_rows=2, pose_rows=None):
         for name in names:
             os.symlink(os.path.join(kitti, side, name), str(folder / side / name))
     with open(os.path.join(kitti, "calib.txt")) as calib:
-        (folder / "calib.txt").write_text("".join(calib.read().splitlines(True)[:calib_rows]))
+        rows = calib.read().splitlines(True)[:calib_rows]
+    if p0_moved:
+        fields = rows[0].split()
+        fields[3] = "100"  # P0 row by row: its first row's last element
+        rows[0] = " ".join(fields) + "\n"
+    (folder / "calib.txt").write_text("".join(rows))
     with open(os.path.join(kitti, "poses.txt")) as poses:
-        (folder / "poses.txt").write_text("\n".join(poses.read().splitlines()[:pose_rows or frames]) + "\n")
+        rows = poses.read().splitlines()[:pose_rows or frames]
+    (folder / "poses.txt").write_text("\n".join(rows[:1] * len(rows) if still else rows) + "\n")
     return folder
 
 
@@ -406,6 +413,8 @@ def stereo_folder(tmp_path, frames, right=True, calib_rows=2, pose_rows=None):
     ({"right": False}, ["--dataset=stereo needs", "image_r/"]),
     ({"calib_rows": 1}, ["--dataset=stereo needs", "P0 and P1"]),
     ({"pose_rows": 2}, ["poses.txt has 2 poses for 3 images"]),
+    ({"p0_moved": True}, ["P0 must be K [I | 0]"]),
+    ({"still": True}, ["frames 0 and 1: no translation between them"]),
 ])
 def test_stereo_pose_on_a_malformed_folder_gives_one_error_line(defect, fragments, tmp_path):
     result = run("lsd_advance_benchmark", ["--dataset=stereo", "--data=%s" % stereo_folder(tmp_path, 3, **defect),

@@ -13,8 +13,9 @@ namespace ximgproc {
 /** @brief The pose evaluation behind LSDAdvance's documented results: what SLAM users judge a line
 detector by. Lines matched between calibrated views are lifted to 3D segments, matched into another
 view, and that view's pose is estimated from the 2D-3D correspondences (lines, points, or both) and
-compared with the ground truth (doc/pose.md). The ground truth never enters the matching nor the
-estimation.
+compared with the ground truth (doc/pose.md). The ground truth of the estimated view never enters
+the matching nor the estimation (the known cameras of the views the 3D segments are lifted from
+do).
 
 Conventions: a projection matrix P = K [R | t] maps world points to pixels in OpenCV's pixel-centre
 convention; a pose (R, t) maps reference coordinates to camera coordinates, X_cam = R X_ref + t; a
@@ -105,8 +106,9 @@ struct CV_EXPORTS_W_SIMPLE PoseEstimate
     CV_PROP_RW bool solved;        //!< a pose with at least PoseEstimationParams::minInliers inliers was found
     CV_PROP_RW Mat R;              //!< 3x3 CV_64F rotation, reference to camera (identity when not solved)
     CV_PROP_RW Mat t;              //!< 3x1 CV_64F translation, reference to camera (zero when not solved)
-    CV_PROP_RW int lineInliers;    //!< lines within PoseEstimationParams::lineThreshold of the pose
-    CV_PROP_RW int pointInliers;   //!< points within PoseEstimationParams::pointThreshold of the pose
+    //! lines within PoseEstimationParams::lineThreshold of the best pose found (also when too few to solve it)
+    CV_PROP_RW int lineInliers;
+    CV_PROP_RW int pointInliers;   //!< points within PoseEstimationParams::pointThreshold of that pose
     CV_PROP_RW int iterations;     //!< RANSAC hypotheses drawn
     CV_PROP_RW std::vector<uchar> lineInlierMask;   //!< 1 for each inlier line, in input order
     CV_PROP_RW std::vector<uchar> pointInlierMask;  //!< 1 for each inlier point, in input order
@@ -115,11 +117,13 @@ struct CV_EXPORTS_W_SIMPLE PoseEstimate
 /** @brief Estimates the pose of a camera from 2D-3D line correspondences, point correspondences,
 or both (doc/pose.md).
 A minimal solver on three correspondences of either kind (each gives two equations; a few Newton
-steps from the identity pose: no motion prior) runs inside RANSAC with fixed seeds; the best
+steps from the identity pose, with no motion prior but the nearest solution to the reference frame:
+give the 3D features in the coordinates of a frame near the camera, such as the previous frame or a
+keyframe, as tracking does) runs inside RANSAC with fixed seeds; the best
 hypothesis (truncated quadratic cost) is refined on its inliers by Levenberg-Marquardt (cv::LMSolver)
 under a Huber loss, on the distances of the projected 3D endpoints to their 2D lines and on the
 reprojection errors of the points, in pixels; the inliers are then taken again and refined once more.
-@param cameraMatrix 3x3 K of the camera (CV_32F or CV_64F), skew 0.
+@param cameraMatrix 3x3 K = [fx s cx; 0 fy cy; 0 0 1] of the camera (CV_32F or CV_64F).
 @param segments3d 3D segments in reference coordinates, N x 1 CV_32FC(6) or N x 6 CV_32F/CV_64F.
 @param segments2d The 2D segment each 3D segment is seen as, N x 1 CV_32FC4 (std::vector<Vec4f>);
 only its supporting line matters.
@@ -127,8 +131,8 @@ only its supporting line matters.
 CV_32F/CV_64F; may be empty.
 @param points2d The pixel each 3D point is seen at, M x 1 CV_32FC2 (std::vector<Point2f>).
 @param params RANSAC and refinement settings.
-@return The pose and its inliers. Fewer than 3 correspondences, or none that agree, give
-solved = false. Throws on mismatched counts, non-finite values, a zero-length 2D segment or a bad
+@return The pose and its inliers. Fewer than 3 correspondences, none that agree, or inliers that
+leave a direction of the pose free (3D lines that are all parallel, for one) give solved = false. Throws on mismatched counts, non-finite values, a zero-length 2D segment or a bad
 setting.
 */
 CV_EXPORTS_W PoseEstimate estimatePose(InputArray cameraMatrix, InputArray segments3d, InputArray segments2d,
