@@ -32,11 +32,18 @@ void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<in
     order.resize(kept);
 }
 
-void acrossDirections(const std::vector<Vec4f>& lines, int bins, int maxLines, std::vector<int>& order,
-                      std::vector<int>& rankInBin)
+// The column (or row) of a grid of `cells` equal cells over [start, start + size) that holds x.
+static int cellOf(double x, double start, double size, int cells)
 {
-    CV_Assert(bins >= 1 && maxLines >= 0);
-    std::vector<int> linesInBin(bins, 0);
+    const double cell = size > 0 ? std::floor((x - start) * cells / size) : 0.0;
+    return (int)std::min<double>(cells - 1, std::max(0.0, cell));
+}
+
+void acrossDirections(const std::vector<Vec4f>& lines, int bins, int cells, const Rect2f& area, int maxLines,
+                      std::vector<int>& order, std::vector<int>& rankInBin)
+{
+    CV_Assert(bins >= 1 && cells >= 1 && maxLines >= 0);
+    std::vector<int> linesInBin((size_t)bins * cells * cells, 0);
     rankInBin.resize(lines.size());
     for (int i : order)
     {
@@ -44,8 +51,10 @@ void acrossDirections(const std::vector<Vec4f>& lines, int bins, int maxLines, s
         // The undirected angle turned by half a bin, in [0, pi): bin 0 is centred on the horizontal.
         double angle = std::atan2((double)l[3] - l[1], (double)l[2] - l[0]) + 0.5 * CV_PI / bins;
         angle = angle - CV_PI * std::floor(angle / CV_PI);
-        const int bin = std::min(bins - 1, (int)(angle * bins / CV_PI));
-        rankInBin[i] = linesInBin[bin]++;
+        const int direction = std::min(bins - 1, (int)(angle * bins / CV_PI));
+        const int column = cellOf(0.5 * ((double)l[0] + l[2]), area.x, area.width, cells);
+        const int row = cellOf(0.5 * ((double)l[1] + l[3]), area.y, area.height, cells);
+        rankInBin[i] = linesInBin[((size_t)row * cells + column) * bins + direction]++;
     }
     // Stable: equal ranks keep the strongest-first order.
     std::stable_sort(order.begin(), order.end(), [&rankInBin](int a, int b) { return rankInBin[a] < rankInBin[b]; });
@@ -81,7 +90,11 @@ void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, cons
     if (params.lineOrder == LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS)
     {
         strongestFirst(keys, 0, order);
-        acrossDirections(candidates, params.directionBins, params.maxLines, order, rankInBin);
+        // Without an image size (processSegments), the grid covers the lines' endpoints.
+        const Rect2f area = !imageSize.empty() ? Rect2f(Point2f(), Size2f(imageSize))
+                            : candidates.empty() ? Rect2f()
+                                                 : Rect2f(boundingRect(Mat(candidates).reshape(2, (int)candidates.size() * 2)));
+        acrossDirections(candidates, params.directionBins, params.gridCells, area, params.maxLines, order, rankInBin);
     }
     else
         strongestFirst(keys, params.maxLines, order);

@@ -50,7 +50,8 @@
     X(double, minLineLengthRatio, MinLineLengthRatio, 0.0, Range::real(0, CLOSED, 1, CLOSED), nullptr)            \
     X(int, maxLines, MaxLines, 0, Range::real(1, CLOSED, 100000, CLOSED).orValue(0, "all"), nullptr)              \
     X(int, lineOrder, LineOrder, LSDAdvance::LINE_ORDER_STRONGEST, Range::enumOf(kLineOrders), nullptr)           \
-    X(int, directionBins, DirectionBins, 4, Range::real(2, CLOSED, 180, CLOSED), nullptr)
+    X(int, directionBins, DirectionBins, 4, Range::real(2, CLOSED, 180, CLOSED), nullptr)                        \
+    X(int, gridCells, GridCells, 1, Range::real(1, CLOSED, 32, CLOSED), nullptr)
 
 // LSDAdvance::LSDParams: X(type, field, default, range, key in files of version 4.6.0 or nullptr)
 #define LSDA_LSD_PARAMS(X)                                                                                         \

@@ -385,10 +385,10 @@ struct SelectionParams
 {
     explicit SelectionParams(const LSDAdvance::Params& p = LSDAdvance::Params())
         : minLineLength(p.minLineLength), minLineLengthRatio(p.minLineLengthRatio), maxLines(p.maxLines),
-          lineOrder(p.lineOrder), directionBins(p.directionBins)
+          lineOrder(p.lineOrder), directionBins(p.directionBins), gridCells(p.gridCells)
     {}
     double minLineLength, minLineLengthRatio;
-    int maxLines, lineOrder, directionBins;
+    int maxLines, lineOrder, directionBins, gridCells;
 };
 
 //! The selection's length threshold: the larger of minLineLength and minLineLengthRatio times
@@ -400,11 +400,13 @@ CV_EXPORTS double selectionMinLength(const SelectionParams& params, Size imageSi
 CV_EXPORTS void strongestFirst(const std::vector<float>& keys, int maxLines, std::vector<int>& order);
 
 //! LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS: `order`, strongest first (strongestFirst() of all of
-//! them), is ordered again by the rank of each line among those of its direction bin (bins of
-//! 180 / bins degrees of the undirected direction, the first centred on the horizontal), equal
-//! ranks strongest first, and cut to the first maxLines (0: all). rankInBin gets each line's rank.
-CV_EXPORTS void acrossDirections(const std::vector<Vec4f>& lines, int bins, int maxLines, std::vector<int>& order,
-                                 std::vector<int>& rankInBin);
+//! them), is ordered again by the rank of each line among those of its bin, equal ranks strongest
+//! first, and cut to the first maxLines (0: all). A bin is one of `bins` bins of the undirected
+//! direction (each 180 / bins degrees, the first centred on the horizontal) in one of the cells x
+//! cells equal cells of `area` that hold the lines' midpoints (those outside it in the nearest
+//! cell). rankInBin gets each line's rank.
+CV_EXPORTS void acrossDirections(const std::vector<Vec4f>& lines, int bins, int cells, const Rect2f& area, int maxLines,
+                                 std::vector<int>& order, std::vector<int>& rankInBin);
 
 //! The selection of one call: lines shorter than selectionMinLength() are dropped; the others are
 //! ordered by SelectionParams::lineOrder on their keys, the responses on gray when given (those

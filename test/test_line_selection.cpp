@@ -237,6 +237,7 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     EXPECT_EQ(60, frontEnd->getMaxLines());
     EXPECT_EQ(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS, frontEnd->getLineOrder());
     EXPECT_EQ(4, frontEnd->getDirectionBins());
+    EXPECT_EQ(2, frontEnd->getGridCells());
     EXPECT_EQ(LSDAdvance::LENGTH_FILTER_ADAPTIVE, frontEnd->getLengthFilterMode());  // stateless
     EXPECT_EQ(LSDAdvance::SMOOTH_EVERY_IMAGE, frontEnd->getLSDParams().fullScaleSmoothing);
 
@@ -244,6 +245,7 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     Ptr<LSDAdvance> reverted = createLSDAdvance(LSDAdvance::PRESET_FRONT_END);
     reverted->setMaxLines(0);
     reverted->setLineOrder(LSDAdvance::LINE_ORDER_STRONGEST);
+    reverted->setGridCells(1);
     const LSDAdvance::Params a = reverted->getParams(), b;
     for (const lsda::Field<LSDAdvance::Params>& f : lsda::fieldsOf<LSDAdvance::Params>())
         EXPECT_EQ(f.get(b), f.get(a)) << f.name;
@@ -253,7 +255,8 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     for (const lsda::Field<LSDAdvance::LSDParams>& f : lsda::fieldsOf<LSDAdvance::LSDParams>())
         EXPECT_EQ(f.get(d), f.get(c)) << f.name;
 
-    // Its lines: the defaults' lines of the smoothed image in the order across directions, cut to 60.
+    // Its lines: the defaults' lines of the smoothed image in the order across directions in each
+    // quarter of the image, cut to 60.
     const Mat img = building();
     std::vector<Vec4f> lines, all;
     frontEnd->detect(img, lines);
@@ -266,7 +269,7 @@ TEST(LSDAdvance_Selection, front_end_preset_keeps_60_lines_spread_across_directi
     std::vector<int> order(all.size()), scratch;
     for (size_t i = 0; i < order.size(); i++)
         order[i] = (int)i;
-    lsda::acrossDirections(all, 4, 60, order, scratch);
+    lsda::acrossDirections(all, 4, 2, Rect2f(0.f, 0.f, (float)img.cols, (float)img.rows), 60, order, scratch);
     ASSERT_EQ(60u, order.size());
     for (size_t i = 0; i < order.size(); i++)
         EXPECT_EQ(all[order[i]], lines[i]) << i;
@@ -289,55 +292,67 @@ TEST(LSDAdvance_Selection, across_directions_takes_the_strongest_of_each_bin_the
                                        segmentAt(0, 30, 3, 60), segmentAt(0, 40, 0, 50), segmentAt(0, 0, 90, 40),
                                        segmentAt(0, 0, -89, 30), segmentAt(0, 0, 45, 20) };
     std::vector<int> order = { 0, 1, 2, 3, 4, 5, 6, 7 }, scratch;
-    lsda::acrossDirections(lines, 4, 0, order, scratch);
+    lsda::acrossDirections(lines, 4, 1, Rect2f(), 0, order, scratch);
     // Four bins centred on 0, 45, 90 and 135 degrees: the horizontal one holds the lines either
     // side of it (1, 178, 179, 3, 0 deg), then 90 and 91 deg, then 45 deg.
     EXPECT_EQ(std::vector<int>({ 0, 5, 7, 1, 6, 2, 3, 4 }), order);
     // With six bins too: the horizontal bin holds the lines either side of the horizontal.
     std::vector<int> six = { 0, 1, 2, 3, 4, 5, 6, 7 };
-    lsda::acrossDirections(lines, 6, 0, six, scratch);
+    lsda::acrossDirections(lines, 6, 1, Rect2f(), 0, six, scratch);
     EXPECT_EQ(std::vector<int>({ 0, 5, 7, 1, 6, 2, 3, 4 }), six);
     // A direction and its opposite are one: a horizontal line pointing left is in bin 0.
     std::vector<int> opposite = { 0, 1 }, scratchOpposite;
-    lsda::acrossDirections({ segmentAt(50, 0, 180, 10), segmentAt(0, 5, 0, 5) }, 4, 0, opposite, scratchOpposite);
+    lsda::acrossDirections({ segmentAt(50, 0, 180, 10), segmentAt(0, 5, 0, 5) }, 4, 1, Rect2f(), 0, opposite, scratchOpposite);
     EXPECT_EQ(std::vector<int>({ 0, 1 }), opposite);
     EXPECT_EQ(0, scratchOpposite[0]);
     EXPECT_EQ(1, scratchOpposite[1]);
     // The first N are the budget of N: a prefix of the order of all of them.
     std::vector<int> budget = { 0, 1, 2, 3, 4, 5, 6, 7 };
-    lsda::acrossDirections(lines, 4, 5, budget, scratch);
+    lsda::acrossDirections(lines, 4, 1, Rect2f(), 5, budget, scratch);
     EXPECT_EQ(std::vector<int>(order.begin(), order.begin() + 5), budget);
     // One bin: the strongest-first order.
     std::vector<int> one = { 0, 1, 2, 3, 4, 5, 6, 7 };
-    lsda::acrossDirections(lines, 1, 0, one, scratch);
+    lsda::acrossDirections(lines, 1, 1, Rect2f(), 0, one, scratch);
     EXPECT_EQ(std::vector<int>({ 0, 1, 2, 3, 4, 5, 6, 7 }), one);
 }
 
 TEST(LSDAdvance_Selection, across_directions_spreads_a_budget_over_the_bins_of_real_lines)
 {
     const Mat img = building();
-    for (int bins : { 2, 6, 12 })
+    // (direction bins, grid cells per side)
+    for (const Vec2i& config : { Vec2i(2, 1), Vec2i(6, 1), Vec2i(12, 1), Vec2i(4, 2), Vec2i(4, 3) })
     {
-        SCOPED_TRACE(bins);
+        const int directions = config[0], cells = config[1], bins = directions * cells * cells;
+        SCOPED_TRACE(cv::format("%d direction bins, %d x %d cells", directions, cells, cells));
         Ptr<LSDAdvance> spread = createLSDAdvance();
         spread->setLineOrder(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS);
-        spread->setDirectionBins(bins);
+        spread->setDirectionBins(directions);
+        spread->setGridCells(cells);
         std::vector<Vec4f> all, strongest, lines;
         spread->detect(img, all);
         createLSDAdvance()->detect(img, strongest);
         EXPECT_EQ(asSet(strongest), asSet(all));  // without a budget, only the order changes
-        spread->setMaxLines(3 * bins);
+        const int budget = std::min(3 * bins, (int)all.size() / 2);
+        spread->setMaxLines(budget);
         spread->detect(img, lines);
-        ASSERT_EQ((size_t)(3 * bins), lines.size());
-        EXPECT_EQ(std::vector<Vec4f>(all.begin(), all.begin() + 3 * bins), lines);
-        // Every bin gives its three strongest lines, or all it holds (the others fill the budget).
+        ASSERT_EQ((size_t)budget, lines.size());
+        EXPECT_EQ(std::vector<Vec4f>(all.begin(), all.begin() + budget), lines);
+        EXPECT_NE(std::vector<Vec4f>(strongest.begin(), strongest.begin() + budget), lines);
+        // Every bin gives its strongest lines, as many as the budget has for each bin, or all it
+        // holds (the others fill the budget). A bin: a direction in the cell of the midpoint.
+        const auto binOf = [&](const Vec4f& l) {
+            const int column = std::min(cells - 1, (int)(0.5 * (l[0] + l[2]) * cells / img.cols));
+            const int row = std::min(cells - 1, (int)(0.5 * (l[1] + l[3]) * cells / img.rows));
+            return (row * cells + column) * directions + directionBin(l, directions);
+        };
         std::vector<int> available(bins, 0), taken(bins, 0);
         for (const Vec4f& l : all)
-            available[directionBin(l, bins)]++;
+            available[binOf(l)]++;
         for (const Vec4f& l : lines)
-            taken[directionBin(l, bins)]++;
+            taken[binOf(l)]++;
+        const int perBin = budget / bins;
         for (int b = 0; b < bins; b++)
-            EXPECT_GE(taken[b], std::min(3, available[b])) << "bin " << b;
+            EXPECT_GE(taken[b], std::min(perBin, available[b])) << "bin " << b;
         // The responses follow the lines: each that of its line.
         std::vector<float> responses, expected;
         spread->getLastResponses(responses);
@@ -346,15 +361,64 @@ TEST(LSDAdvance_Selection, across_directions_spreads_a_budget_over_the_bins_of_r
     }
 }
 
-TEST(LSDAdvance_Selection, across_directions_orders_process_segments_by_length_within_the_bins)
+TEST(LSDAdvance_Selection, grid_cells_take_the_strongest_of_each_direction_in_each_cell)
 {
-    const std::vector<Vec4f> segments = { segmentAt(10, 10, 0, 100), segmentAt(10, 30, 0, 90), segmentAt(10, 50, 90, 40),
-                                          segmentAt(200, 10, 90, 30) };
+    // Strongest first, in a 200 x 100 area: three horizontal lines with midpoints in its top-left
+    // quarter, one horizontal in the top-right, one vertical in the top-left, one horizontal in the
+    // bottom-right.
+    const std::vector<Vec4f> lines = { segmentAt(10, 10, 0, 60), segmentAt(10, 20, 0, 60), segmentAt(10, 30, 0, 60),
+                                       segmentAt(120, 10, 0, 60), segmentAt(50, 2, 90, 40),
+                                       segmentAt(120, 80, 0, 60) };
+    const Rect2f area(0.f, 0.f, 200.f, 100.f);
+    std::vector<int> order = { 0, 1, 2, 3, 4, 5 }, scratch;
+    lsda::acrossDirections(lines, 4, 2, area, 0, order, scratch);
+    // The first of each (cell, direction) bin, then the second of the top-left horizontal one.
+    EXPECT_EQ(std::vector<int>({ 0, 3, 4, 5, 1, 2 }), order);
+    // One cell: the directions alone.
+    std::vector<int> one = { 0, 1, 2, 3, 4, 5 };
+    lsda::acrossDirections(lines, 4, 1, area, 0, one, scratch);
+    EXPECT_EQ(std::vector<int>({ 0, 4, 1, 2, 3, 5 }), one);
+    // The cells are those of the area: moved by its offset, the same lines fall in other cells; a
+    // midpoint outside the area counts in the nearest cell.
+    std::vector<int> moved = { 0, 1, 2, 3, 4, 5 };
+    lsda::acrossDirections(lines, 4, 2, Rect2f(-100.f, -50.f, 200.f, 100.f), 0, moved, scratch);
+    EXPECT_EQ(std::vector<int>({ 0, 4, 1, 2, 3, 5 }), moved);  // all in the bottom-right cell
+}
+
+// A detector whose processSegments() returns the given segments themselves (no filter, no merging)
+// in LINE_ORDER_ACROSS_DIRECTIONS, the first maxLines.
+Ptr<LSDAdvance> segmentsAcrossDirections(int maxLines)
+{
     Ptr<LSDAdvance> detector = createLSDAdvance();
     detector->setMergeStrategy(LSDAdvance::MERGE_NONE);
     detector->setLengthFilterMode(LSDAdvance::LENGTH_FILTER_NONE);
     detector->setLineOrder(LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS);
-    detector->setMaxLines(2);
+    detector->setMaxLines(maxLines);
+    return detector;
+}
+
+TEST(LSDAdvance_Selection, grid_cells_of_process_segments_cover_the_segments)
+{
+    // Without an image, the grid is on the segments' bounding box, here far from the origin: the
+    // four longest horizontal segments in its top-left quarter, one shorter in each other quarter.
+    const std::vector<Vec4f> segments = { segmentAt(1000, 1000, 0, 100), segmentAt(1000, 1002, 0, 98),
+                                          segmentAt(1000, 1004, 0, 96), segmentAt(1000, 1006, 0, 94),
+                                          segmentAt(1200, 1000, 0, 50), segmentAt(1000, 1100, 0, 50),
+                                          segmentAt(1200, 1100, 0, 50) };
+    Ptr<LSDAdvance> detector = segmentsAcrossDirections(4);
+    std::vector<Vec4f> lines;
+    detector->processSegments(segments, lines);
+    EXPECT_EQ(std::vector<Vec4f>(segments.begin(), segments.begin() + 4), lines);  // one cell: the longest
+    detector->setGridCells(2);
+    detector->processSegments(segments, lines);
+    EXPECT_EQ(asSet({ segments[0], segments[4], segments[5], segments[6] }), asSet(lines));  // one per quarter
+}
+
+TEST(LSDAdvance_Selection, across_directions_orders_process_segments_by_length_within_the_bins)
+{
+    const std::vector<Vec4f> segments = { segmentAt(10, 10, 0, 100), segmentAt(10, 30, 0, 90), segmentAt(10, 50, 90, 40),
+                                          segmentAt(200, 10, 90, 30) };
+    Ptr<LSDAdvance> detector = segmentsAcrossDirections(2);
     std::vector<Vec4f> lines;
     detector->processSegments(segments, lines);
     EXPECT_EQ(std::vector<Vec4f>({ segments[0], segments[2] }), lines);

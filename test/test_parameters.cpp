@@ -367,6 +367,7 @@ TEST(LSDAdvance_Parameters, every_own_parameter_changes_the_output)
         { "maxLines", 20, nullptr, 0 },
         { "lineOrder", LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS, nullptr, 0 },
         { "directionBins", 3, "lineOrder", LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS },
+        { "gridCells", 2, "lineOrder", LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS },
     };
     expectEveryParameterChangesTheLines(effects, img, [](const ParameterAccess& p) { return p.base < 0; },
                                         [](const ParameterAccess&) { return createLSDAdvance(); });

@@ -88,7 +88,8 @@ __Order and selection.__ detect() returns its lines strongest first: by decreasi
 (computeLineResponses(), the KeyLine::response of detect(InputArray, std::vector<KeyLine>&); equal
 responses keep the stages' order). processSegments(), which has no image, returns them longest
 first. With Params::lineOrder LINE_ORDER_ACROSS_DIRECTIONS, that order is taken across bins of
-direction instead: the strongest of each bin first, then the second of each, and so on. After the
+direction (Params::directionBins) in each cell of a grid on the image (Params::gridCells) instead:
+the strongest of each bin first, then the second of each, and so on. After the
 clipping, lines shorter than the larger of Params::minLineLength and Params::minLineLengthRatio
 times min(W, H) are dropped, then the first Params::maxLines are kept: a front end's budget (all
 three off by default, where the lines are the same set as without them); in either order the
@@ -182,9 +183,12 @@ public:
     enum LineOrder
     {
         LINE_ORDER_STRONGEST = 0, //!< by decreasing response (processSegments(): length) (default)
-        /** the strongest line of each of Params::directionBins bins of direction, strongest first, then
-        the second strongest of each bin, and so on: a budget spread over the directions, whose lines
-        constrain a camera pose better than as many lines of a few directions (doc/pose.md) */
+        /** the strongest line of each bin, strongest first, then the second strongest of each bin,
+        and so on; a bin holds the lines of one of Params::directionBins bins of direction whose
+        midpoints lie in one of the Params::gridCells x Params::gridCells cells of the image. A budget
+        spread over the directions and the image, as ORB-SLAM spreads its keypoints: its lines
+        constrain a camera pose better than as many lines of a few directions or of one repeated
+        structure (doc/pose.md) */
         LINE_ORDER_ACROSS_DIRECTIONS = 1
     };
 
@@ -241,7 +245,8 @@ public:
         PRESET_SEQUENCE = 3,
         /** a point-line SLAM front end that keeps a budget of lines for LBD: PRESET_MOST_ACCURATE with
         Params::maxLines 60 in LINE_ORDER_ACROSS_DIRECTIONS (the 60 strongest lines spread over the
-        horizontal, the vertical and the two diagonals) and LSDParams::fullScaleSmoothing
+        horizontal, the vertical and the two diagonals in each quarter of the image: Params::gridCells
+        2) and LSDParams::fullScaleSmoothing
         SMOOTH_EVERY_IMAGE: the lines that gave the best poses, doc/pose.md. Stateless, unlike
         PRESET_SEQUENCE. */
         PRESET_FRONT_END = 4
@@ -273,6 +278,7 @@ public:
         CV_PROP_RW int maxLines;                //!< selection: the line budget, the first maxLines lines of the order (lineOrder) are kept, in 0 (all) or [1, 100000]. Default 0.
         CV_PROP_RW int lineOrder;               //!< selection: one of LineOrder, the order of the lines and of the budget. Default LINE_ORDER_STRONGEST.
         CV_PROP_RW int directionBins;           //!< selection with LINE_ORDER_ACROSS_DIRECTIONS: the undirected directions in this many equal bins, the first centred on the horizontal (4: horizontal, vertical and the two diagonals, each +-22.5 deg), in [2, 180]. Default 4.
+        CV_PROP_RW int gridCells;               //!< selection with LINE_ORDER_ACROSS_DIRECTIONS: the image (processSegments() without imageSize: the lines' bounding box) in this many equal columns and as many rows, a line in the cell of its midpoint, each cell with its own direction bins (1: the whole image), in [1, 32]. Default 1.
     };
 
     /** @brief The LSD algorithm's parameters (@cite Rafael12), used by BASE_LSD (OpenCV's
@@ -453,6 +459,8 @@ public:
     CV_WRAP virtual int getLineOrder() const = 0;                      //!< @brief Returns Params::lineOrder. @return The value.
     CV_WRAP virtual void setDirectionBins(int bins) = 0;               //!< @brief Sets Params::directionBins. @param bins The new value.
     CV_WRAP virtual int getDirectionBins() const = 0;                  //!< @brief Returns Params::directionBins. @return The value.
+    CV_WRAP virtual void setGridCells(int cells) = 0;                  //!< @brief Sets Params::gridCells. @param cells The new value.
+    CV_WRAP virtual int getGridCells() const = 0;                      //!< @brief Returns Params::gridCells. @return The value.
 };
 
 /** @brief Creates an LSDAdvance detector.

@@ -86,7 +86,7 @@ def set_up_for(detector, name):
         detector.setMergeStrategy(api.LSDAdvance_MERGE_BASELINES)
     if name == "minLineLength":  # the lengths the values tried (up to 10 px) drop: the base's shortest
         detector.setLengthFilterMode(api.LSDAdvance_LENGTH_FILTER_NONE)
-    if name == "directionBins":
+    if name in ("directionBins", "gridCells"):
         detector.setLineOrder(api.LSDAdvance_LINE_ORDER_ACROSS_DIRECTIONS)
 
 
@@ -684,27 +684,47 @@ class lsd_advance_test(NewOpenCVTests):
         self.assertEqual(detector.getMaxLines(), 60)
         self.assertEqual(detector.getLineOrder(), api.LSDAdvance_LINE_ORDER_ACROSS_DIRECTIONS)
         self.assertEqual(detector.getDirectionBins(), 4)
+        self.assertEqual(detector.getGridCells(), 2)
         lines = detector.detect(building)
         self.assertEqual(len(lines), 60)
         self.assertTrue(np.array_equal(detector.detect(building), lines))
         self.assertEqual(detector.getLastStats().frameInSequence, 1)
 
-    def test_across_directions_takes_each_bins_strongest_first_and_a_budget_is_a_prefix(self):
+    def lines_across_bins(self, cells):
+        """The small building's lines in LINE_ORDER_ACROSS_DIRECTIONS with 4 bins of direction in each of
+        cells x cells cells, checked to be the defaults' set with one line of each bin present first;
+        the detector, the image, the lines and the bins present."""
         small = self.small_building()
         detector = api.createLSDAdvance()
         detector.setLineOrder(api.LSDAdvance_LINE_ORDER_ACROSS_DIRECTIONS)
         detector.setDirectionBins(4)
+        detector.setGridCells(cells)
         every = detector.detect(small).reshape(-1, 4)
         self.assertEqual(as_set(every), as_set(api.createLSDAdvance().detect(small)))
+        height, width = small.shape[:2]
+        column = np.minimum((every[:, 0] + every[:, 2]) * 0.5 * cells // width, cells - 1)
+        row = np.minimum((every[:, 1] + every[:, 3]) * 0.5 * cells // height, cells - 1)
         angle = (np.degrees(np.arctan2(every[:, 3] - every[:, 1], every[:, 2] - every[:, 0])) + 22.5) % 180.0
-        bins = np.minimum((angle / 45.0).astype(int), 3)  # four bins centred on 0, 45, 90 and 135 degrees
+        direction = np.minimum((angle / 45.0).astype(int), 3)  # four bins centred on 0, 45, 90 and 135 degrees
+        bins = ((row * cells + column) * 4 + direction).astype(int)
         present = sorted(set(bins.tolist()))
         self.assertEqual(sorted(bins[:len(present)].tolist()), present)  # one of each bin first
+        return detector, small, every, present
+
+    def test_across_directions_takes_each_bins_strongest_first_and_a_budget_is_a_prefix(self):
+        detector, small, every, _ = self.lines_across_bins(1)
         detector.setMaxLines(10)
         self.assertTrue(np.array_equal(detector.detect(small).reshape(-1, 4), every[:10]))
         with self.assertRaisesRegex(cv.error, "directionBins"):
             detector.setDirectionBins(1)
         self.assertEqual(detector.getDirectionBins(), 4)
+
+    def test_grid_cells_give_each_quarter_of_the_image_its_strongest_lines_of_each_direction(self):
+        detector, _, _, present = self.lines_across_bins(2)
+        self.assertGreater(len(present), 8)  # bins of several cells
+        with self.assertRaisesRegex(cv.error, "gridCells"):
+            detector.setGridCells(0)
+        self.assertEqual(detector.getGridCells(), 2)
 
     # ----------------------------------------------------------------------------------------
     # Pose evaluation (line_evaluation): the solver and the geometry behind doc/pose.md
