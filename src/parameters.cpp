@@ -206,8 +206,9 @@ Parameters presetParameters(int preset)
     case LSDAdvance::PRESET_FRONT_END:
         // A point-line front end's budget (PL-VINS keeps about 60 lines), spread over the directions
         // in each quarter of the image: of the budget policies measured by the poses they give, the
-        // one that did best on the even pairs of the stereo and multi-view sets (doc/pose.md). The full-scale smoothing of every
-        // image too: without it, the 60 lines of the half-size multi-view images lost most poses.
+        // one that did best on the even pairs of the stereo and multi-view sets (doc/pose.md). The
+        // full-scale smoothing of every image too: without it, the 60 lines of the half-size
+        // multi-view images lost most poses.
         p.own.maxLines = 60;
         p.own.lineOrder = LSDAdvance::LINE_ORDER_ACROSS_DIRECTIONS;
         p.own.gridCells = 2;
