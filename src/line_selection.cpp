@@ -91,9 +91,9 @@ void LineSelection::apply(const std::vector<Vec4f>& lines, const Mat* gray, cons
     {
         strongestFirst(keys, 0, order);
         // Without an image size (processSegments), the grid covers the lines' endpoints.
-        const Rect2f area = !imageSize.empty() ? Rect2f(Point2f(), Size2f(imageSize))
-                            : candidates.empty() ? Rect2f()
-                                                 : Rect2f(boundingRect(Mat(candidates).reshape(2, (int)candidates.size() * 2)));
+        Rect2f area{ Point2f(), Size2f(imageSize) };
+        if (imageSize.empty() && !candidates.empty())
+            area = boundingRect(Mat(candidates).reshape(2, (int)candidates.size() * 2));
         acrossDirections(candidates, params.directionBins, params.gridCells, area, params.maxLines, order, rankInBin);
     }
     else
