@@ -893,7 +893,7 @@ Table poseTable(const std::vector<PoseRow>& rows, const PoseBenchmarkParams& par
 {
     Table table;
     table.header = { "method", "features", "budget", "lines / image", "3D lines / pair", "matches / pair",
-                     "inliers (solved, mean)", "solved", "rotation error, deg (median [95 % CI])",
+                     "line matches the true pose fits", "matched line length, px (median)", "inliers (solved, mean)", "solved", "rotation error, deg (median [95 % CI])",
                      "translation error, % of step (median [95 % CI])", "success", "pose AUC", "AUC / LSD",
                      "wins : losses vs LSD (sign test p)", "ms / image (median)", "time / LSD (median)" };
     for (const PoseRow& row : rows)
@@ -948,6 +948,8 @@ Table poseTable(const std::vector<PoseRow>& rows, const PoseBenchmarkParams& par
                                row.features == PoseFeatures::Points ? std::string("-") : format("%.1f", meanOf(row.linesPerImage)),
                                row.features == PoseFeatures::Points ? std::string("-") : format("%.1f", meanOf(row.liftedPerPair)),
                                format("%.1f", trials ? matches / trials : 0.0),
+                               row.lineMatches ? format("%.2f", (double)row.trueLineInliers / row.lineMatches) : std::string("-"),
+                               row.matchedLineLengths.empty() ? std::string("-") : format("%.0f", median(row.matchedLineLengths)),
                                solved ? format("%.1f", inliers / solved) : std::string("-"), format("%d/%d", solved, trials),
                                withInterval(medianWithInterval(rotation), 1.0, "%.3f"),
                                withInterval(medianWithInterval(translation), 100.0, "%.1f"),

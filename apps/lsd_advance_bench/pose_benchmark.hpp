@@ -370,6 +370,32 @@ inline void addPointCorrespondences(const PointMap& map, const DescribedPoints& 
     }
 }
 
+//! How many line correspondences the true pose makes inliers: both projected 3D endpoints within
+//! `threshold` px of the 2D line (the estimator's test), scoring only, never estimating.
+inline int trueLineInliers(const cv::Matx33d& K, const Correspondences& c, const RelativePose& truth, double threshold)
+{
+    if (c.segments2d.empty())
+        return 0;
+    cv::Mat endpoints;
+    c.segments3d.reshape(1, c.segments3d.rows).convertTo(endpoints, CV_64F);
+    cv::Vec3d rotation;
+    cv::Rodrigues(truth.R, rotation);
+    std::vector<cv::Point2d> projected;
+    cv::projectPoints(endpoints.reshape(3, 2 * endpoints.rows), rotation, truth.t, K, cv::noArray(), projected);
+    int inliers = 0;
+    for (size_t i = 0; i < c.segments2d.size(); i++)
+    {
+        const cv::Vec4f& s = c.segments2d[i];
+        const cv::Vec3d line = cv::Vec3d(s[0], s[1], 1).cross(cv::Vec3d(s[2], s[3], 1));
+        const double norm = std::hypot(line[0], line[1]);
+        bool inlier = true;
+        for (const cv::Point2d& x : { projected[2 * i], projected[2 * i + 1] })
+            inlier = inlier && std::abs(line[0] * x.x + line[1] * x.y + line[2]) <= threshold * norm;
+        inliers += inlier;
+    }
+    return inliers;
+}
+
 //! The pose of the view from the correspondences, for each seed, against the true relative pose.
 inline std::vector<PoseTrial> estimateTrials(const cv::Matx33d& K, const Correspondences& c, const RelativePose& truth,
                                              const PoseBenchmarkParams& params)
@@ -472,6 +498,10 @@ struct PoseRow
     LineSelection selection;
     std::vector<std::vector<PoseTrial> > pairs;
     std::vector<double> linesPerImage, liftedPerPair, detectMs;
+    //! over the pairs: the line correspondences, those the true pose makes inliers, and the
+    //! lengths of their 2D lines in pixels
+    int lineMatches = 0, trueLineInliers = 0;
+    std::vector<double> matchedLineLengths;
 };
 
 //! One image of a pose run: its gray pixels and its camera matrix (scaled with the image).
@@ -594,7 +624,13 @@ public:
                 c.points2d = points.points2d;
             }
             if (m >= 0)
+            {
                 row.liftedPerPair.push_back(lifted[m][s]);
+                row.lineMatches += (int)c.segments2d.size();
+                row.trueLineInliers += trueLineInliers(queryK, c, truth, params_.estimation.lineThreshold);
+                for (const cv::Vec4f& line : c.segments2d)
+                    row.matchedLineLengths.push_back(std::hypot(line[2] - line[0], line[3] - line[1]));
+            }
             row.pairs.push_back(estimateTrials(queryK, c, truth, params_));
         }
     }

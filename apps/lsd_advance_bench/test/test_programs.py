@@ -445,9 +445,27 @@ def test_stereo_pose_scores_every_row_against_lsd_on_the_same_pairs(tmp_path):
         if key[1] != "points":
             assert float(row["lines / image"]) <= 60, key
             assert float(row["3D lines / pair"]) <= float(row["lines / image"]), key
+            assert 0.0 <= float(row["line matches the true pose fits"]) <= 1.0, key
+            assert float(row["matched line length, px (median)"]) > 0, key
+        else:
+            assert row["line matches the true pose fits"] == row["matched line length, px (median)"] == "-"
     assert rows[("LSD", "lines", "60")]["AUC / LSD"] == "-"
     assert rows[(front_end, "lines", "60")]["wins : losses vs LSD (sign test p)"] != "-"
     assert float(rows[("ORB", "points", "-")]["matches / pair"]) > 0
+
+
+def test_multiview_pose_scores_the_line_matches_by_the_true_pose(tmp_path):
+    """The fountain at half size, two triplets: most of LSD's line matches into the third view fit its
+    true pose (the translation the wrong way round fits none of them), and their lengths are measured."""
+    fountain = os.path.join(os.environ.get("LSD_ADVANCE_DATA_DIR", ""), "strecha_fountain_p11")
+    if not os.path.isdir(os.path.join(fountain, "gt_dense_cameras")):
+        unavailable("no strecha_fountain_p11 in LSD_ADVANCE_DATA_DIR")
+    result = run("lsd_advance_benchmark", ["--dataset=multiview", "--data=" + fountain, "--scale=0.5", "--pairs=2",
+                                           "--methods=lsd", "--budgets=60", "--seeds=1"], tmp_path)
+    row = markdown_table(succeeded(result), keys=3)[("LSD", "lines", "60")]
+    assert float(row["matches / pair"]) > 0
+    assert float(row["line matches the true pose fits"]) >= 0.5
+    assert float(row["matched line length, px (median)"]) > 0
 
 
 def test_stereo_pose_subset_takes_the_even_or_the_odd_pairs(tmp_path):
